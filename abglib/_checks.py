@@ -48,7 +48,9 @@ def as_float_array(name: str, value) -> np.ndarray:
     try:
         arr = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError) as exc:
-        raise AbglibValueError(f"{name} must be a real number or array of them, got {value!r}") from exc
+        raise AbglibValueError(
+            f"{name} must be a real number or array of them, got {value!r}"
+        ) from exc
     return arr
 
 

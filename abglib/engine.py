@@ -17,7 +17,10 @@ import numpy as np
 from ._checks import AbglibValueError, as_float_array, check_positive, describe
 from .gains import Gains
 
-__all__ = ["INIT_MODES", "TrackResult", "track"]
+__all__ = ["INIT_MODES", "OUTPUTS", "TrackResult", "track"]
+
+#: Output arrays :func:`track` can return, in :class:`TrackResult` order.
+OUTPUTS = ("x_pred", "x_smooth", "v_smooth", "a_smooth")
 
 #: Initialisation names accepted by :func:`track` (besides an explicit state array).
 INIT_MODES = ("zero", "two_point", "three_point")
@@ -39,28 +42,36 @@ class TrackResult:
         Smoothed (corrected) position, velocity and acceleration after sample ``k``
         (seed 000, eqs 1-3). ``a_smooth`` is identically zero for an alpha-beta tracker
         started from zero acceleration.
+
+    An output not requested through ``track(..., outputs=...)`` is ``None``.
     """
 
-    x_pred: np.ndarray
-    x_smooth: np.ndarray
-    v_smooth: np.ndarray
-    a_smooth: np.ndarray
+    x_pred: np.ndarray | None
+    x_smooth: np.ndarray | None
+    v_smooth: np.ndarray | None
+    a_smooth: np.ndarray | None
 
     def __iter__(self):
         yield from (self.x_pred, self.x_smooth, self.v_smooth, self.a_smooth)
 
 
 # --------------------------------------------------------------------------- kernel
-def _recursion(z, alpha, beta, gamma, dt, detected, state0, npoints, xp, xs, vs, acc):
+def _recursion(z, alpha, beta, gamma, dt, detected, state0, npoints, xp, xs, vs, acc, done):
     """Literal recursion of seed 000, eqs 1-6, for one series (numba-compiled).
 
     ``npoints`` leading samples (0, 2 or 3) initialise the state from the measurements
     (seed 001, section 3, and its three-point analogue) instead of being filtered.
+    The four output buffers are written in place; a buffer of length 1 (an output the
+    caller did not request) is skipped, which saves its memory traffic.
     """
     x = state0[0]
     v = state0[1]
     a = state0[2]
     n = z.shape[0]
+    w_xp = xp.shape[0] == n
+    w_xs = xs.shape[0] == n
+    w_vs = vs.shape[0] == n
+    w_as = acc.shape[0] == n
     for i in range(n):
         T = dt[i]
         if i < npoints:
@@ -80,7 +91,7 @@ def _recursion(z, alpha, beta, gamma, dt, detected, state0, npoints, xp, xs, vs,
                 a = 2.0 * (d2 - d1) / (dt[1] + T)
                 v = d2 + 0.5 * a * T
                 x = z[2]
-            xp[i] = z[i]
+            x_p = z[i]
         else:
             # predictor, eqs 4-6
             x_p = x + T * v + 0.5 * T * T * a
@@ -95,10 +106,15 @@ def _recursion(z, alpha, beta, gamma, dt, detected, state0, npoints, xp, xs, vs,
                 # missed detection: coast on the prediction
                 x = x_p
                 v = v_p
+        if w_xp:
             xp[i] = x_p
-        xs[i] = x
-        vs[i] = v
-        acc[i] = a
+        if w_xs:
+            xs[i] = x
+        if w_vs:
+            vs[i] = v
+        if w_as:
+            acc[i] = a
+    done[0] = 1
 
 
 @functools.cache
@@ -106,8 +122,15 @@ def _kernel():
     """Compile the recursion into a numba gufunc on first use (cached on disk)."""
     from numba import guvectorize
 
-    sig = "void(f8[:], f8[:], f8[:], f8[:], f8[:], u1[:], f8[:], i8, f8[:], f8[:], f8[:], f8[:])"
-    layout = "(n),(n),(n),(n),(n),(n),(m),()->(n),(n),(n),(n)"
+    # The output buffers are passed as inputs with their own core dimension (n or 1) so
+    # that unrequested outputs cost no memory; numpy hands the kernel views of the
+    # caller's float64 buffers (no casting, no overlap with inputs), so the writes land
+    # there. ``done`` is a dummy per-series output that gufuncs require.
+    sig = (
+        "void(f8[:], f8[:], f8[:], f8[:], f8[:], u1[:], f8[:], i8, "
+        "f8[:], f8[:], f8[:], f8[:], u1[:])"
+    )
+    layout = "(n),(n),(n),(n),(n),(n),(m),(),(p),(q),(r),(s)->()"
     return guvectorize([sig], layout, nopython=True, cache=True)(_recursion)
 
 
@@ -148,7 +171,7 @@ def _initial_state(init, batch_shape):
 
 
 # --------------------------------------------------------------------------- public
-def track(z, gains: Gains, dt=1.0, init="zero", detected=None) -> TrackResult:
+def track(z, gains: Gains, dt=1.0, init="zero", detected=None, outputs=OUTPUTS) -> TrackResult:
     """Run a fixed-gain alpha-beta(-gamma) tracker over measurements.
 
     Parameters
@@ -175,12 +198,15 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None) -> TrackResult:
     detected : bool array (..., n), optional
         False where the detection was missed: the tracker coasts on its prediction
         (``x_smooth = x_pred``), and ``z`` there is ignored (it may be NaN).
+    outputs : sequence of str, default all of ``OUTPUTS``
+        Which of ``x_pred``, ``x_smooth``, ``v_smooth``, ``a_smooth`` to return; the
+        others are ``None`` and cost no memory (useful in large Monte Carlo runs).
 
     Returns
     -------
     TrackResult
         ``x_pred``, ``x_smooth``, ``v_smooth``, ``a_smooth``, each of the broadcast
-        shape ``(..., n)``.
+        shape ``(..., n)`` (``None`` if not requested).
 
     Raises
     ------
@@ -209,6 +235,13 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None) -> TrackResult:
     """
     if not isinstance(gains, Gains):
         raise AbglibValueError(f"gains must be an abglib.Gains, got {type(gains).__name__}")
+    if isinstance(outputs, str):
+        outputs = (outputs,)
+    unknown = [o for o in outputs if o not in OUTPUTS]
+    if unknown or not outputs:
+        raise AbglibValueError(
+            f"outputs must be a non-empty subset of {', '.join(OUTPUTS)}, got {list(outputs)!r}"
+        )
 
     if isinstance(z, np.ma.MaskedArray):
         mask_det = ~np.ma.getmaskarray(z)
@@ -245,14 +278,18 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None) -> TrackResult:
         shapes = ", ".join(f"{k} {v.shape}" for k, v in operands.items())
         raise AbglibValueError(f"operands do not broadcast together: {shapes}") from None
 
-    # measurements must be finite wherever they are used
+    # measurements must be finite wherever they are used; a finite sum proves it in one
+    # cheap pass (an overflowing sum of finite values falls through to the exact check)
     det_full = operands["detected"].astype(bool)
-    bad = ~np.isfinite(operands["z"]) & det_full
+    if np.isfinite(np.sum(z)):
+        bad = np.zeros((), dtype=bool)
+    else:
+        bad = ~np.isfinite(operands["z"]) & det_full
     if bad.any():
         idx = tuple(int(i) for i in np.argwhere(bad)[0])
         zb = np.broadcast_to(operands["z"], full)
         raise AbglibValueError(
-            f"z must be finite where detected, got {zb[idx]!r} at index {idx}; "
+            f"z must be finite where detected, got {describe(zb[idx])} at index {idx}; "
             "mark missed detections with detected=False (or a masked array)"
         )
 
@@ -278,7 +315,11 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None) -> TrackResult:
             f"shape {full[:-1]}"
         ) from None
 
-    out = _kernel()(
+    batch = full[:-1]
+    buffers = {
+        name: np.empty(full) if name in outputs else np.empty(batch + (1,)) for name in OUTPUTS
+    }
+    _kernel()(
         operands["z"],
         operands["alpha"],
         operands["beta"],
@@ -287,5 +328,6 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None) -> TrackResult:
         operands["detected"],
         state0,
         npoints,
+        *buffers.values(),
     )
-    return TrackResult(*out)
+    return TrackResult(**{k: (v if k in outputs else None) for k, v in buffers.items()})

@@ -118,4 +118,6 @@ class Gains:
 
     def isclose(self, other: Gains, rtol: float = 1e-9, atol: float = 0.0) -> bool:
         """True where all three gains agree with ``other`` within tolerance."""
-        return all(np.allclose(x, y, rtol=rtol, atol=atol) for x, y in zip(self, other, strict=True))
+        return all(
+            np.allclose(x, y, rtol=rtol, atol=atol) for x, y in zip(self, other, strict=True)
+        )

@@ -1,0 +1,178 @@
+"""Speed of abglib.track against FilterPy and a plain Python loop, side by side in one run.
+
+Usage::
+
+    python benchmarks/engine_speed.py [--out benchmarks/results/engine_speed.csv] [--quick]
+
+Cases (issue: abglib core, item 5):
+
+* ``single``: one series of 10^6 samples;
+* ``batch``: 10^4 Monte Carlo runs x 10^3 samples (abglib does them in one call).
+
+Peers, on the same data and converted gains (:mod:`abglib.conventions`):
+
+* alpha-beta: ``filterpy.gh.GHFilter.batch_filter`` (FilterPy's fastest alpha-beta path);
+* alpha-beta-gamma: ``filterpy.gh.GHKFilter.update`` per sample (its ``batch_filter``
+  ignores ``k``, so it cannot run an alpha-beta-gamma tracker);
+* a plain Python loop of seed 000, eqs 1-6.
+
+The pure-Python peers are linear in the number of samples, so they are timed on a
+subset (``peer_samples`` in the CSV) and reported as samples per second; abglib is
+timed on the whole case (median of ``--repeats`` calls after a warm-up call, which
+also pays numba's one-off compilation). Every peer's output is checked against abglib's
+on the subset (maximum relative difference in the CSV; the issue asks for <= 1e-9).
+Ratios are samples-per-second over FilterPy's. Timings are wall clock on one core
+(numba's gufunc is single-threaded): noisy machines give noisy numbers, so run it
+several times before quoting a figure.
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import statistics
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from filterpy.gh import GHFilter, GHKFilter
+
+from abglib import Gains, track
+from abglib.conventions import to_filterpy
+
+SEED = 20261121  # fixed so every run times the same data
+DT = 0.1
+GAINS = {
+    # standard (critically damped) gains for theta = 0.8 (seed 000, eqs 22-24 and the
+    # alpha-beta pair): typical moderate smoothing
+    "alpha-beta": Gains(1 - 0.8**2, (1 - 0.8) ** 2),
+    "alpha-beta-gamma": Gains(1 - 0.8**3, 1.5 * (1 - 0.8) ** 2 * (1 + 0.8), (1 - 0.8) ** 3),
+}
+
+
+def python_loop(z, gains: Gains, dt: float):
+    """Seed 000, eqs 1-6, one sample at a time in plain Python. Returns x_smooth."""
+    alpha, beta, gamma = float(gains.alpha), float(gains.beta), float(gains.gamma)
+    b, c, h = beta / dt, gamma / dt**2, 0.5 * dt**2
+    x = v = a = 0.0
+    out = [0.0] * len(z)
+    for i, zi in enumerate(z.tolist()):
+        xp = x + dt * v + h * a
+        r = zi - xp
+        x = xp + alpha * r
+        v = v + dt * a + b * r
+        a = a + c * r
+        out[i] = x
+    return np.array(out)
+
+
+def filterpy_run(z, gains: Gains, dt: float):
+    """FilterPy's fastest path for the tracker order. Returns x_smooth."""
+    g, h, k = to_filterpy(gains)
+    if gains.order == 2:
+        return GHFilter(x=0.0, dx=0.0, dt=dt, g=g, h=h).batch_filter(z)[1:, 0]
+    f = GHKFilter(x=0.0, dx=0.0, ddx=0.0, dt=dt, g=g, h=h, k=k)
+    return np.array([f.update(zi)[0] for zi in z])
+
+
+def _time(fn, repeats=1):
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        out = fn()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times), out
+
+
+def _rel_diff(a, b):
+    return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
+
+
+def run(quick: bool = False, repeats: int = 5) -> pd.DataFrame:
+    rng = np.random.default_rng(SEED)
+    runs, n_batch = (10**3, 10**3) if quick else (10**4, 10**3)
+    cases = {
+        "single": rng.normal(size=10**5 if quick else 10**6).cumsum(),
+        "batch": rng.normal(size=(runs, n_batch)).cumsum(axis=-1),
+    }
+    peer_samples = 2 * 10**4 if quick else 2 * 10**5
+    rows = []
+    for case, z in cases.items():
+        for filt, gains in GAINS.items():
+            track(z[..., :16], gains, dt=DT)  # warm-up (numba compilation / cache load)
+            for outputs in (("x_pred", "x_smooth", "v_smooth", "a_smooth"), ("x_smooth",)):
+                track(z, gains, dt=DT, outputs=outputs)  # touch the memory once
+                secs, out = _time(lambda: track(z, gains, dt=DT, outputs=outputs), repeats)  # noqa: B023
+                label = "abglib.track" + ("" if len(outputs) == 4 else " (x_smooth only)")
+                rows.append(
+                    dict(
+                        case=case,
+                        filter=filt,
+                        implementation=label,
+                        samples=z.size,
+                        peer_samples=z.size,
+                        seconds=secs,
+                        max_rel_diff=0.0,
+                    )
+                )
+            # peers on a subset: the first series (or rows) summing to peer_samples
+            flat = z.reshape(-1, z.shape[-1])
+            per_row = flat.shape[1]
+            nrows = max(1, min(flat.shape[0], peer_samples // per_row))
+            sub = flat[:nrows, : min(per_row, peer_samples)]
+            ref = track(sub, gains, dt=DT).x_smooth
+            for label, fn in (("filterpy", filterpy_run), ("python loop", python_loop)):
+                secs, out = _time(lambda: np.stack([fn(row, gains, DT) for row in sub]))  # noqa: B023
+                rows.append(
+                    dict(
+                        case=case,
+                        filter=filt,
+                        implementation=label,
+                        samples=z.size,
+                        peer_samples=sub.size,
+                        seconds=secs,
+                        max_rel_diff=_rel_diff(out, ref),
+                    )
+                )
+    df = pd.DataFrame(rows)
+    df["samples_per_s"] = df["peer_samples"] / df["seconds"]
+    fp = df[df.implementation == "filterpy"].set_index(["case", "filter"])["samples_per_s"]
+    df["ratio_vs_filterpy"] = [r.samples_per_s / fp[(r.case, r.filter)] for r in df.itertuples()]
+    df["machine"] = f"{platform.machine()} python {platform.python_version()}"
+    return df
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--out", type=Path, default=Path("benchmarks/results/engine_speed.csv"))
+    parser.add_argument("--quick", action="store_true", help="smaller sizes (a smoke test)")
+    parser.add_argument("--repeats", type=int, default=5)
+    args = parser.parse_args(argv)
+    df = run(quick=args.quick, repeats=args.repeats)
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    df.to_csv(args.out, index=False, float_format="%.6g")
+    with pd.option_context("display.width", 160, "display.max_columns", 20):
+        print(
+            df[
+                [
+                    "case",
+                    "filter",
+                    "implementation",
+                    "samples_per_s",
+                    "ratio_vs_filterpy",
+                    "max_rel_diff",
+                ]
+            ].to_string(index=False, float_format=lambda v: f"{v:.3g}")
+        )
+    print(f"\nwritten {args.out}")
+    worst = df.loc[df.implementation == "filterpy", "max_rel_diff"].max()
+    if worst > 1e-9:
+        print(f"FilterPy disagrees with abglib by {worst:.3g} relative (> 1e-9)", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
