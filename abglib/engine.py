@@ -117,8 +117,47 @@ def _recursion(z, alpha, beta, gamma, dt, detected, state0, npoints, xp, xs, vs,
     done[0] = 1
 
 
+def _recursion_ab(z, alpha, beta, dt, detected, state0, npoints, xp, xs, vs, done):
+    """The same recursion with gamma = 0 and no acceleration state (seed 000, eqs 1-2, 4).
+
+    Bit-for-bit what :func:`_recursion` computes when gamma and the initial acceleration
+    are zero (the dropped terms are exact zeros), with a shorter dependency chain.
+    """
+    x = state0[0]
+    v = state0[1]
+    n = z.shape[0]
+    w_xp = xp.shape[0] == n
+    w_xs = xs.shape[0] == n
+    w_vs = vs.shape[0] == n
+    for i in range(n):
+        T = dt[i]
+        if i < npoints:
+            # two-point initialisation (seed 001, section 3, eqs 9-10)
+            if i == 0:
+                v = 0.0
+            else:
+                v = (z[1] - z[0]) / T
+            x = z[i]
+            x_p = z[i]
+        else:
+            x_p = x + T * v
+            if detected[i]:
+                r = z[i] - x_p
+                x = x_p + alpha[i] * r
+                v = v + (beta[i] / T) * r
+            else:
+                x = x_p
+        if w_xp:
+            xp[i] = x_p
+        if w_xs:
+            xs[i] = x
+        if w_vs:
+            vs[i] = v
+    done[0] = 1
+
+
 @functools.cache
-def _kernel():
+def _kernel(order: int = 3):
     """Compile the recursion into a numba gufunc on first use (cached on disk)."""
     from numba import guvectorize
 
@@ -126,6 +165,10 @@ def _kernel():
     # that unrequested outputs cost no memory; numpy hands the kernel views of the
     # caller's float64 buffers (no casting, no overlap with inputs), so the writes land
     # there. ``done`` is a dummy per-series output that gufuncs require.
+    if order == 2:
+        sig = "void(f8[:], f8[:], f8[:], f8[:], u1[:], f8[:], i8, f8[:], f8[:], f8[:], u1[:])"
+        layout = "(n),(n),(n),(n),(n),(m),(),(p),(q),(r)->()"
+        return guvectorize([sig], layout, nopython=True, cache=True)(_recursion_ab)
     sig = (
         "void(f8[:], f8[:], f8[:], f8[:], f8[:], u1[:], f8[:], i8, "
         "f8[:], f8[:], f8[:], f8[:], u1[:])"
@@ -316,18 +359,34 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None, outputs=OUTPUTS) 
         ) from None
 
     batch = full[:-1]
+    alpha_beta = npoints < 3 and not np.any(operands["gamma"]) and not np.any(state0[..., 2])
     buffers = {
         name: np.empty(full) if name in outputs else np.empty(batch + (1,)) for name in OUTPUTS
     }
-    _kernel()(
-        operands["z"],
-        operands["alpha"],
-        operands["beta"],
-        operands["gamma"],
-        operands["dt"],
-        operands["detected"],
-        state0,
-        npoints,
-        *buffers.values(),
-    )
+    common = (operands["z"], operands["alpha"], operands["beta"])
+    if alpha_beta:
+        # alpha-beta tracker: acceleration stays exactly zero (np.zeros maps zero pages
+        # lazily, so an unread a_smooth costs nothing)
+        if "a_smooth" in outputs:
+            buffers["a_smooth"] = np.zeros(full)
+        _kernel(2)(
+            *common,
+            operands["dt"],
+            operands["detected"],
+            state0,
+            npoints,
+            buffers["x_pred"],
+            buffers["x_smooth"],
+            buffers["v_smooth"],
+        )
+    else:
+        _kernel(3)(
+            *common,
+            operands["gamma"],
+            operands["dt"],
+            operands["detected"],
+            state0,
+            npoints,
+            *buffers.values(),
+        )
     return TrackResult(**{k: (v if k in outputs else None) for k, v in buffers.items()})

@@ -201,3 +201,25 @@ def test_bad_input_messages(kwargs, match):
     args = {"z": [1.0, 2.0, 3.0], "gains": Gains(0.5, 0.1), **kwargs}
     with pytest.raises(ValueError, match=match):
         track(**args)
+
+
+def test_alpha_beta_fast_path_is_bit_identical_to_general_kernel():
+    from abglib.engine import _kernel
+
+    rng = np.random.default_rng(10)
+    z = rng.normal(size=(3, 200)).cumsum(axis=-1)
+    det = (rng.uniform(size=200) > 0.2).astype(np.uint8)
+    det[:2] = 1
+    fast = track(z, Gains(0.45, 0.12), dt=0.3, detected=det.astype(bool), init="two_point")
+    bufs = [np.empty(z.shape) for _ in range(4)]
+    n = z.shape[-1]
+    _kernel(3)(
+        z,
+        *(np.broadcast_to(v, (n,)) for v in (0.45, 0.12, 0.0, 0.3)),
+        det,
+        np.zeros(3),
+        2,
+        *bufs,
+    )
+    for name, b in zip(OUTPUTS, bufs, strict=True):
+        np.testing.assert_array_equal(getattr(fast, name), b, err_msg=name)
