@@ -1,0 +1,337 @@
+"""Variance reduction factors: the exact Lyapunov solution and the printed closed forms.
+
+A variance reduction factor (VRF) is the steady-state variance of a tracker output per
+unit variance of white measurement noise (seed 000, "Performance measures"). The exact
+route (:func:`vrf`) solves the discrete Lyapunov equation of the state-space form
+(:mod:`abglib.analysis._statespace`); the closed forms are kept exactly as printed:
+
+- :func:`vrf_simpson`: Simpson's eqs 11-14 (seed 000) -- the *smoothed* outputs;
+- :func:`vrf_benedict_ab`: the standard alpha-beta results that eqs 11-14 reduce to at
+  ``gamma = 0`` (seed 000, section "alpha-beta tracker", ref. [7]);
+- :func:`vrf_standard_abg`: Morrison's eqs 25-27 for the standard (fading-memory) gains --
+  these are the one-step *prediction* VRFs;
+- :func:`vrf_standard_ab`: Morrison's eqs 31-32 (printed ``k_y`` is ``k_v``) -- likewise
+  the one-step prediction VRFs.
+
+Units: velocity VRFs carry ``1/T^2`` and acceleration VRFs ``1/T^4``, so with ``dt = T``
+in seconds they are variances in (units/s)^2 and (units/s^2)^2 per unit^2 of noise.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg
+
+from .._checks import AbglibValueError, check_in_range, check_positive
+from ..gains import Gains
+from ._statespace import state_space
+
+__all__ = [
+    "VRF_KEYS",
+    "vrf",
+    "vrf_benedict_ab",
+    "vrf_simpson",
+    "vrf_standard_ab",
+    "vrf_standard_abg",
+]
+
+#: Keys of the dictionary returned by :func:`vrf` (``shared/CONTRACTS.md``, section 2).
+VRF_KEYS = ("x_smooth", "v_smooth", "a_smooth", "x_pred", "v_pred", "a_pred")
+
+
+# --------------------------------------------------------------------------- helpers
+def _require_gains(gains) -> Gains:
+    if not isinstance(gains, Gains):
+        raise AbglibValueError(f"gains must be an abglib.Gains, got {type(gains).__name__}")
+    return gains
+
+
+def _broadcast(gains, dt):
+    """``(alpha, beta, gamma, T)`` as float64 arrays of one broadcast shape."""
+    g = _require_gains(gains)
+    T = check_positive("dt", dt)
+    try:
+        return np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in g), T)
+    except ValueError:
+        raise AbglibValueError(
+            f"dt of shape {T.shape} does not broadcast against gains of shape {g.shape}"
+        ) from None
+
+
+def _out(arr: np.ndarray):
+    """A Python float for 0-d results, else the array."""
+    return float(arr) if np.ndim(arr) == 0 else arr
+
+
+def _pole_radius(alpha: float, beta: float, gamma: float) -> float:
+    """Largest pole modulus of one scalar gain set (reduced model when gamma == 0)."""
+    F = state_space(Gains(alpha, beta, gamma), 1.0).F
+    return float(np.max(np.abs(np.linalg.eigvals(F))))
+
+
+def _check_stable(alpha, beta, gamma, what: str) -> None:
+    """Raise unless every gain set of the (broadcast) arrays is strictly stable.
+
+    ``what`` completes the sentence "the ... is unbounded" / "... is undefined" in the
+    message, e.g. ``"steady-state variance is unbounded"``.
+    """
+    alpha, beta, gamma = np.broadcast_arrays(
+        np.asarray(alpha, float), np.asarray(beta, float), np.asarray(gamma, float)
+    )
+    for idx in np.ndindex(alpha.shape):
+        a, b, g = float(alpha[idx]), float(beta[idx]), float(gamma[idx])
+        r = _pole_radius(a, b, g)
+        if not r < 1.0:
+            where = f" at index {idx if len(idx) != 1 else idx[0]}" if idx else ""
+            raise AbglibValueError(
+                f"the {what}: gains (alpha={a!r}, beta={b!r}, gamma={g!r}){where} are "
+                f"unstable (largest pole radius {r:.6g} >= 1)"
+            )
+
+
+# --------------------------------------------------------------------------- exact
+def _vrf_one(alpha: float, beta: float, gamma: float, T: float) -> tuple[float, ...]:
+    # Solve at T = 1 (well scaled) and rescale: with S = diag(1, 1/T, 1/T^2) the state
+    # at interval T is S times the state at T = 1 (F_T = S F_1 S^-1, K_T = S K_1), so
+    # P_T = S P_1 S: velocity variances carry 1/T^2, acceleration variances 1/T^4.
+    ss = state_space(Gains(alpha, beta, gamma), 1.0)
+    P = scipy.linalg.solve_discrete_lyapunov(ss.F, np.outer(ss.K, ss.K))
+    Pp = ss.Phi @ P @ ss.Phi.T
+    scale = np.array([1.0, T**-2, T**-4])[: ss.n]
+    p, pp = np.diag(P) * scale, np.diag(Pp) * scale
+    if ss.n == 2:  # alpha-beta: no acceleration state, zero acceleration output
+        return p[0], p[1], 0.0, pp[0], pp[1], 0.0
+    return p[0], p[1], p[2], pp[0], pp[1], pp[2]
+
+
+def vrf(gains: Gains, dt=1.0) -> dict:
+    r"""Exact steady-state variance reduction factors, from the discrete Lyapunov equation.
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains (seed 000, eqs 1-3), scalar or a bank of shape ``(...)``.
+    dt : float or array (...), default 1.0
+        Sample interval ``T`` > 0 (seconds); broadcasts against the bank.
+
+    Returns
+    -------
+    dict
+        Keys ``x_smooth, v_smooth, a_smooth, x_pred, v_pred, a_pred`` (:data:`VRF_KEYS`):
+        the steady-state variance of each output per unit variance of white measurement
+        noise; floats for scalar gains, arrays ``(...)`` for a bank. Velocity entries
+        carry ``1/T^2``, acceleration entries ``1/T^4``. ``*_pred`` is the one-step
+        prediction made before a measurement arrives (``x_pred`` is :func:`abglib.track`'s
+        ``x_pred``). For an alpha-beta tracker the acceleration entries are 0.
+
+    Raises
+    ------
+    ValueError
+        (:class:`~abglib.AbglibValueError`) for unstable gains: the variance is unbounded.
+
+    Notes
+    -----
+    With the state-space form ``s(n) = F s(n-1) + K z(n)``, ``F = (I - K H) Phi``
+    (seed 000, eqs 1-6) and unit white noise ``z``, the steady-state covariance ``P`` of
+    the smoothed state solves
+
+    .. math:: P = F P F^T + K K^T,
+
+    and the one-step predicted state ``Phi s(n-1)`` has covariance ``Phi P Phi^T``.
+    The diagonals are the VRFs. Simpson's closed forms (seed 000, eqs 11-14,
+    :func:`vrf_simpson`) are the smoothed entries; Morrison's (eqs 25-27, 31-32) the
+    predicted ones.
+
+    Examples
+    --------
+    >>> r = vrf(Gains(0.5, 0.2))
+    >>> round(r["x_smooth"], 6), round(r["x_pred"], 6)
+    (0.428571, 0.714286)
+    """
+    a, b, g, T = _broadcast(gains, dt)
+    _check_stable(a, b, g, "steady-state variance is unbounded")
+    out = np.empty(a.shape + (len(VRF_KEYS),))
+    for idx in np.ndindex(a.shape):
+        out[idx] = _vrf_one(float(a[idx]), float(b[idx]), float(g[idx]), float(T[idx]))
+    return {k: _out(out[..., i]) for i, k in enumerate(VRF_KEYS)}
+
+
+# --------------------------------------------------------------------------- printed
+def vrf_benedict_ab(gains: Gains, dt=1.0) -> dict:
+    r"""Standard alpha-beta VRFs (Benedict & Bordner, seed 000 ref. [7]).
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains with ``gamma == 0``, scalar or a bank ``(...)``.
+    dt : float or array (...), default 1.0
+        Sample interval ``T`` > 0.
+
+    Returns
+    -------
+    dict
+        ``x_smooth``, ``v_smooth``, ``x_pred``, ``v_pred`` (floats or arrays ``(...)``).
+
+    Notes
+    -----
+    Seed 000 states that at ``gamma = 0`` Simpson's eqs 11-14 reduce to Benedict and
+    Bordner's results; dividing numerator and denominator of eqs 11-12 by ``gamma`` and
+    letting ``gamma -> 0`` gives
+
+    .. math::
+        k_x = \frac{2\alpha^2 + 2\beta - 3\alpha\beta}{\alpha(4 - 2\alpha - \beta)},\quad
+        k_v T^2 = \frac{2\beta^2}{\alpha(4 - 2\alpha - \beta)},\quad
+        k_{x_p} = \frac{2\alpha^2 + 2\beta + \alpha\beta}{\alpha(4 - 2\alpha - \beta)},
+
+    and ``v_pred = v_smooth`` (the alpha-beta predictor does not change the velocity).
+    All four equal the exact Lyapunov values of :func:`vrf`.
+    """
+    a, b, g, T = _broadcast(gains, dt)
+    if np.any(g != 0.0):
+        raise AbglibValueError(
+            "vrf_benedict_ab is the alpha-beta closed form and needs gamma == 0, got "
+            f"gamma={float(g[g != 0.0].flat[0])!r}; use vrf_simpson for alpha-beta-gamma"
+        )
+    _check_stable(a, b, g, "steady-state variance is unbounded")
+    den = a * (4.0 - 2.0 * a - b)
+    kv = 2.0 * b * b / den / T**2
+    return {
+        "x_smooth": _out((2.0 * a * a + 2.0 * b - 3.0 * a * b) / den),
+        "v_smooth": _out(kv),
+        "x_pred": _out((2.0 * a * a + 2.0 * b + a * b) / den),
+        "v_pred": _out(kv.copy()),
+    }
+
+
+def vrf_simpson(gains: Gains, dt=1.0) -> dict:
+    r"""Simpson's variance reduction factors, as printed (seed 000, eqs 11-14).
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains, scalar or a bank ``(...)``; stable.
+    dt : float or array (...), default 1.0
+        Sample interval ``T`` > 0.
+
+    Returns
+    -------
+    dict
+        Keys ``x``, ``v``, ``a`` (floats or arrays ``(...)``), as printed.
+
+    Notes
+    -----
+    Seed 000, eqs 11-14 (from Simpson 1963, its ref. [1]):
+
+    .. math::
+        k_x Y^2 &= 2\beta\gamma(2\alpha^2 + 2\beta - 3\alpha\beta)
+                   - \alpha\gamma^2(4 - 2\alpha - \beta) \\
+        k_v Y^2 T^2 &= 4\beta^3\gamma - 4\beta^2\gamma^2 + 2\gamma^3(2 - \alpha) \\
+        k_a Y^2 T^4 &= 4\beta\gamma^3 \\
+        Y^2 &= \gamma[\alpha(2\beta + \gamma) - 2\gamma](4 - 2\alpha - \beta)
+
+    These are exactly the *smoothed* VRFs (``x_smooth``, ``v_smooth``, ``a_smooth`` of
+    :func:`vrf`). At ``gamma = 0`` every term carries the factor ``gamma`` (0/0); there
+    the standard alpha-beta results (:func:`vrf_benedict_ab`, the ``gamma -> 0`` limit)
+    are returned, with ``a = 0``.
+    """
+    a, b, g, T = _broadcast(gains, dt)
+    _check_stable(a, b, g, "steady-state variance is unbounded")
+    ab = g == 0.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        q = 4.0 - 2.0 * a - b
+        Y2 = g * (a * (2.0 * b + g) - 2.0 * g) * q  # eq 14
+        kx = (2.0 * b * g * (2.0 * a * a + 2.0 * b - 3.0 * a * b) - a * g * g * q) / Y2  # eq 11
+        kv = (4.0 * b**3 * g - 4.0 * b * b * g * g + 2.0 * g**3 * (2.0 - a)) / (Y2 * T**2)  # 12
+        ka = 4.0 * b * g**3 / (Y2 * T**4)  # eq 13
+        # gamma = 0: the Benedict-Bordner limit of eqs 11-13
+        kx = np.where(ab, (2.0 * a * a + 2.0 * b - 3.0 * a * b) / (a * q), kx)
+        kv = np.where(ab, 2.0 * b * b / (a * q) / T**2, kv)
+        ka = np.where(ab, 0.0, ka)
+    return {"x": _out(kx), "v": _out(kv), "a": _out(ka)}
+
+
+def _theta(theta) -> np.ndarray:
+    return check_in_range("theta", theta, 0.0, 1.0, low_inclusive=True)
+
+
+def _theta_dt(theta, dt):
+    th = _theta(theta)
+    T = check_positive("dt", dt)
+    try:
+        return np.broadcast_arrays(th, T)
+    except ValueError:
+        raise AbglibValueError(
+            f"dt of shape {T.shape} does not broadcast against theta of shape {th.shape}"
+        ) from None
+
+
+def vrf_standard_abg(theta, dt=1.0) -> dict:
+    r"""Morrison's VRFs of the standard alpha-beta-gamma tracker, as printed (seed 000, eqs 25-27).
+
+    Parameters
+    ----------
+    theta : float or array (...)
+        Fading-memory parameter, ``0 <= theta < 1``; the gains are seed 000, eqs 22-24:
+        ``alpha = 1 - theta^3``, ``beta = 1.5 (1 - theta)^2 (1 + theta)``,
+        ``gamma = (1 - theta)^3``.
+    dt : float or array (...), default 1.0
+        Sample interval ``T`` > 0.
+
+    Returns
+    -------
+    dict
+        Keys ``x``, ``v``, ``a`` (floats or arrays ``(...)``), as printed.
+
+    Notes
+    -----
+    Seed 000, eqs 25-27 (from Morrison 1969, p. 526):
+
+    .. math::
+        k_x &= \frac{1-\theta}{(1+\theta)^5}(19 + 24\theta + 16\theta^2 + 6\theta^3
+               + \theta^4) \\
+        k_v T^2 &= \frac{(1-\theta)^3}{(1+\theta)^5}\,\frac{49 + 50\theta + 13\theta^2}{2} \\
+        k_a T^4 &= 6\,\frac{(1-\theta)^5}{(1+\theta)^5}
+
+    They are exactly the one-step *prediction* VRFs (``x_pred``, ``v_pred``, ``a_pred``
+    of :func:`vrf`), not the smoothed ones that Simpson's eqs 11-14 give.
+    """
+    th, T = _theta_dt(theta, dt)
+    p5 = (1.0 + th) ** 5
+    kx = (1.0 - th) / p5 * (19.0 + 24.0 * th + 16.0 * th**2 + 6.0 * th**3 + th**4)  # eq 25
+    kv = (1.0 - th) ** 3 / p5 * (49.0 + 50.0 * th + 13.0 * th**2) / 2.0 / T**2  # eq 26
+    ka = 6.0 * (1.0 - th) ** 5 / p5 / T**4  # eq 27
+    return {"x": _out(kx), "v": _out(kv), "a": _out(ka)}
+
+
+def vrf_standard_ab(theta, dt=1.0) -> dict:
+    r"""Morrison's VRFs of the standard alpha-beta tracker, as printed (seed 000, eqs 31-32).
+
+    Parameters
+    ----------
+    theta : float or array (...)
+        Fading-memory parameter, ``0 <= theta < 1``; gains ``alpha = 1 - theta^2``,
+        ``beta = (1 - theta)^2`` (seed 000, unnumbered, before eq 31).
+    dt : float or array (...), default 1.0
+        Sample interval ``T`` > 0.
+
+    Returns
+    -------
+    dict
+        Keys ``x``, ``v`` (floats or arrays ``(...)``), as printed.
+
+    Notes
+    -----
+    Seed 000, eqs 31-32 (the scan prints ``k_y(0)`` for ``k_v(0)`` in eq 32):
+
+    .. math::
+        k_x = \frac{1-\theta}{(1+\theta)^3}(5 + 4\theta + \theta^2),\qquad
+        k_v T^2 = \frac{2(1-\theta)^3}{(1+\theta)^3}
+
+    They are exactly the one-step *prediction* VRFs (``x_pred``, ``v_pred`` of
+    :func:`vrf`; for alpha-beta ``v_pred = v_smooth``).
+    """
+    th, T = _theta_dt(theta, dt)
+    p3 = (1.0 + th) ** 3
+    kx = (1.0 - th) / p3 * (5.0 + 4.0 * th + th**2)  # eq 31
+    kv = 2.0 * (1.0 - th) ** 3 / p3 / T**2  # eq 32
+    return {"x": _out(kx), "v": _out(kv)}

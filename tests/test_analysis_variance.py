@@ -1,0 +1,260 @@
+"""Variance reduction factors: Lyapunov vs printed closed forms vs direct summation vs Monte Carlo.
+
+Findings pinned here (seed 000): Simpson's eqs 11-14 are the *smoothed* VRFs exactly;
+Morrison's eqs 25-27 and 31-32 are the one-step *prediction* VRFs exactly; the
+Benedict-Bordner alpha-beta forms are the gamma -> 0 limit of eqs 11-13. The Sinsky memo
+(seed 003) tabulates sqrt(VRF) of the smoothed position and of the smoothed velocity
+(the latter in 1/s with T in seconds).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from abglib import Gains, track
+from abglib.analysis._variance import (
+    VRF_KEYS,
+    vrf,
+    vrf_benedict_ab,
+    vrf_simpson,
+    vrf_standard_ab,
+    vrf_standard_abg,
+)
+
+
+# --------------------------------------------------------------------------- strategies
+def standard_abg(theta):
+    """Standard (critically damped) gains, seed 000 eqs 22-24."""
+    return Gains(1 - theta**3, 1.5 * (1 - theta) ** 2 * (1 + theta), (1 - theta) ** 3)
+
+
+def standard_ab(theta):
+    """Standard alpha-beta gains, seed 000 (unnumbered, before eq 31)."""
+    return Gains(1 - theta**2, (1 - theta) ** 2)
+
+
+def gains_from_poles(p):
+    """Gains whose characteristic polynomial (seed 000, eq 40) has the roots ``p``.
+
+    eq 40 expands to z^3 + (a + b + g/2 - 3) z^2 + (3 - 2a - b + g/2) z - (1 - a); for two
+    roots (alpha-beta, eq 41): z^2 + (a + b - 2) z + (1 - a). Any roots inside the unit
+    circle give stable gains, independently of the library's stability code.
+    """
+    c = np.real(np.poly(p))
+    if len(p) == 2:
+        alpha = 1.0 - c[2]
+        return Gains(alpha, c[1] + 2.0 - alpha)
+    alpha = 1.0 + c[3]
+    gamma = c[2] + c[1] + alpha
+    return Gains(alpha, c[1] + 3.0 - alpha - gamma / 2.0, gamma)
+
+
+radius = st.floats(0.0, 0.95)  # pole radius < 0.95 keeps the sums short
+angle = st.floats(0.05, np.pi - 0.05)
+real_pole = st.floats(-0.95, 0.95)
+pole_pair = st.tuples(radius, angle).map(
+    lambda ra: [ra[0] * np.exp(1j * ra[1]), ra[0] * np.exp(-1j * ra[1])]
+)
+two_real = st.tuples(real_pole, real_pole).map(list)
+stable_ab = st.one_of(pole_pair, two_real).map(gains_from_poles)
+stable_abg = (
+    st.tuples(st.one_of(pole_pair, two_real), real_pole)
+    .map(lambda t: gains_from_poles(t[0] + [t[1]]))
+    .filter(lambda g: g.gamma > 1e-6)  # gamma = 0 means a pole at z = 1
+)
+dts = st.sampled_from([0.01, 0.5, 1.0, 3.0])  # sample intervals in seconds (arbitrary)
+
+
+# --------------------------------------------------------------------------- helpers
+def impulse_sums(gains, dt):
+    """Sum of squared impulse responses of every output, from abglib.track."""
+    n = 3000  # 0.95**3000 ~ 1e-67: the tails are far below double precision
+    z = np.zeros(n)
+    z[0] = 1.0
+    r = track(z, gains, dt=dt)
+    v_pred = np.concatenate([[0.0], r.v_smooth[:-1] + dt * r.a_smooth[:-1]])
+    a_pred = np.concatenate([[0.0], r.a_smooth[:-1]])
+    return {
+        "x_smooth": np.sum(r.x_smooth**2),
+        "v_smooth": np.sum(r.v_smooth**2),
+        "a_smooth": np.sum(r.a_smooth**2),
+        "x_pred": np.sum(r.x_pred**2),
+        "v_pred": np.sum(v_pred**2),
+        "a_pred": np.sum(a_pred**2),
+    }
+
+
+# --------------------------------------------------------------------------- exact route
+@settings(max_examples=40, deadline=None)
+@given(st.one_of(stable_ab, stable_abg), dts)
+def test_lyapunov_equals_direct_summation(gains, dt):
+    exact = vrf(gains, dt)
+    summed = impulse_sums(gains, dt)
+    for k in VRF_KEYS:
+        assert exact[k] == pytest.approx(summed[k], rel=1e-9, abs=1e-300), k
+
+
+@pytest.mark.parametrize(
+    "gains",
+    [standard_abg(0.5), standard_ab(0.6), Gains(0.5, 0.2, 0.02)],  # hand-picked stable sets
+)
+def test_lyapunov_equals_monte_carlo(gains):
+    dt = 2.0  # seconds: checks the 1/T^2 and 1/T^4 units too
+    rng = np.random.default_rng(20240611)  # fixed seed: reproducible
+    batches, n, warm = 40, 25_000, 500  # 1e6 samples in 40 batches; warm-up discarded
+    z = rng.standard_normal((batches, n + warm))
+    r = track(z, gains, dt=dt)
+    exact = vrf(gains, dt)
+    series = {"x_smooth": r.x_smooth, "v_smooth": r.v_smooth, "x_pred": r.x_pred}
+    if gains.gamma != 0.0:
+        series["a_smooth"] = r.a_smooth
+    for k, s in series.items():
+        per_batch = np.mean(s[:, warm:] ** 2, axis=1)  # zero-mean output
+        est = per_batch.mean()
+        se = per_batch.std(ddof=1) / np.sqrt(batches)  # standard error by batch means
+        assert abs(est - exact[k]) < 5.0 * se, (k, est, exact[k], se)
+
+
+def test_units_scale_with_dt():
+    g = standard_abg(0.4)
+    one, T = vrf(g, 1.0), 0.25  # arbitrary interval
+    other = vrf(g, T)
+    for k, p in (("x", 0), ("v", 2), ("a", 4)):
+        for kind in ("smooth", "pred"):
+            key = f"{k}_{kind}"
+            assert other[key] == pytest.approx(one[key] / T**p, rel=1e-12)
+
+
+def test_bank_and_scalar_shapes():
+    theta = np.array([0.2, 0.5, 0.8])  # three standard gain sets
+    bank = vrf(standard_abg(theta), dt=np.array([1.0, 2.0, 3.0]))
+    for k in VRF_KEYS:
+        assert bank[k].shape == (3,)
+        assert bank[k][1] == pytest.approx(vrf(standard_abg(0.5), 2.0)[k], rel=1e-14)
+    scalar = vrf(Gains(0.5, 0.2))
+    assert all(isinstance(v, float) for v in scalar.values())
+    assert scalar["a_smooth"] == 0.0 and scalar["a_pred"] == 0.0
+
+
+def test_doc_example_alpha_beta():
+    # alpha = 0.5, beta = 0.2: Benedict-Bordner by hand, 0.6 / 1.4 and 1.0 / 1.4
+    r = vrf(Gains(0.5, 0.2))
+    assert r["x_smooth"] == pytest.approx(0.6 / 1.4, rel=1e-14)
+    assert r["x_pred"] == pytest.approx(1.0 / 1.4, rel=1e-14)
+
+
+# --------------------------------------------------------------------------- printed forms
+@settings(max_examples=60, deadline=None)
+@given(stable_abg, dts)
+def test_simpson_eqs_11_14_are_the_smoothed_vrfs(gains, dt):
+    exact, printed = vrf(gains, dt), vrf_simpson(gains, dt)
+    assert printed["x"] == pytest.approx(exact["x_smooth"], rel=1e-7)
+    assert printed["v"] == pytest.approx(exact["v_smooth"], rel=1e-7)
+    assert printed["a"] == pytest.approx(exact["a_smooth"], rel=1e-7)
+
+
+@settings(max_examples=60, deadline=None)
+@given(stable_ab, dts)
+def test_benedict_bordner_forms_are_exact(gains, dt):
+    exact, bb = vrf(gains, dt), vrf_benedict_ab(gains, dt)
+    for k in ("x_smooth", "v_smooth", "x_pred", "v_pred"):
+        assert bb[k] == pytest.approx(exact[k], rel=1e-9)
+    simpson = vrf_simpson(gains, dt)  # gamma = 0 branch
+    assert (simpson["x"], simpson["v"], simpson["a"]) == (
+        pytest.approx(exact["x_smooth"], rel=1e-9),
+        pytest.approx(exact["v_smooth"], rel=1e-9),
+        0.0,
+    )
+
+
+@pytest.mark.parametrize("alpha, beta", [(0.5, 0.2), (0.3, 0.0267), (1.2, 0.9)])  # stable
+def test_simpson_tends_to_benedict_bordner(alpha, beta):
+    # seed 000: "setting gamma to zero ... all of Simpson's results reduce to those given
+    # by Benedict and Bordner"; the printed form at small gamma approaches the limit
+    small = vrf_simpson(Gains(alpha, beta, 1e-7))
+    bb = vrf_benedict_ab(Gains(alpha, beta))
+    assert small["x"] == pytest.approx(bb["x_smooth"], rel=1e-5)
+    assert small["v"] == pytest.approx(bb["v_smooth"], rel=1e-5)
+    assert small["a"] == pytest.approx(0.0, abs=1e-12)
+
+
+@given(st.floats(0.0, 0.99), dts)
+@settings(max_examples=60, deadline=None)
+def test_morrison_eqs_25_27_are_the_prediction_vrfs(theta, dt):
+    exact, printed = vrf(standard_abg(theta), dt), vrf_standard_abg(theta, dt)
+    assert printed["x"] == pytest.approx(exact["x_pred"], rel=1e-8)
+    assert printed["v"] == pytest.approx(exact["v_pred"], rel=1e-8)
+    assert printed["a"] == pytest.approx(exact["a_pred"], rel=1e-8)
+
+
+@given(st.floats(0.0, 0.99), dts)
+@settings(max_examples=60, deadline=None)
+def test_morrison_eqs_31_32_are_the_prediction_vrfs(theta, dt):
+    exact, printed = vrf(standard_ab(theta), dt), vrf_standard_ab(theta, dt)
+    assert printed["x"] == pytest.approx(exact["x_pred"], rel=1e-8)
+    assert printed["v"] == pytest.approx(exact["v_pred"], rel=1e-8)
+
+
+def test_eq_25_is_not_the_smoothed_vrf():
+    # the distinction matters: at theta = 0.5 (arbitrary) eq 25 gives 2.358 (= x_pred,
+    # 191/81) while the smoothed position VRF (eq 11) is 0.8025 (= 65/81)
+    theta = 0.5
+    assert vrf_standard_abg(theta)["x"] == pytest.approx(191 / 81, rel=1e-12)
+    assert vrf(standard_abg(theta))["x_smooth"] == pytest.approx(65 / 81, rel=1e-12)
+
+
+# --------------------------------------------------------------------------- Sinsky memo
+# seed 003, Sinsky memo table: update period T (s), alpha, beta, sigma ratio columns
+# headed sigma_xdot/sigma_x and sigma_xddot/sigma_x, described as smoothed position and
+# smoothed velocity
+SINSKY = [
+    (1, 0.250, 0.066, 0.491, 0.101),
+    (2, 0.370, 0.175, 0.613, 0.116),
+    (3, 0.465, 0.300, 0.690, 0.125),
+    (4, 0.530, 0.431, 0.745, 0.132),
+    (5, 0.580, 0.565, 0.788, 0.139),
+    (6, 0.620, 0.685, 0.820, 0.142),
+    (7, 0.645, 0.855, 0.861, 0.158),
+    (8, 0.665, 0.910, 0.872, 0.149),
+]
+
+
+def test_sinsky_memo_columns():
+    T, a, b, col1, col2 = (np.array(c, dtype=float) for c in zip(*SINSKY, strict=True))
+    r = vrf(Gains(a, b), dt=T)
+    d1 = np.sqrt(r["x_smooth"]) - col1
+    d2 = np.sqrt(r["v_smooth"]) - col2  # 1/s, T in seconds
+    # column 2: all 8 within half a unit of the printed third decimal (max 0.00039)
+    assert np.max(np.abs(d2)) < 0.0005
+    # column 1: 7 of 8 within half a unit; T = 1 s prints .491 for 0.49163
+    assert np.max(np.abs(d1[1:])) < 0.0005
+    assert d1[0] == pytest.approx(0.00063, abs=0.00001)
+    # the other readings fail: predicted position, and velocity in per-sample units
+    assert np.min(np.abs(np.sqrt(r["x_pred"]) - col1)) > 0.05
+    assert np.min(np.abs(np.sqrt(r["v_smooth"]) * T - col2)[1:]) > 0.05
+
+
+# --------------------------------------------------------------------------- bad input
+def test_unstable_gains_raise_naming_them():
+    with pytest.raises(ValueError, match=r"variance is unbounded: gains \(alpha=1\.9, beta=0\.5"):
+        vrf(Gains(1.9, 0.5))  # 2 alpha + beta > 4 violates seed 000, eq 44
+    with pytest.raises(ValueError, match=r"at index 1 are unstable"):
+        vrf(Gains(np.array([0.5, 1.9]), np.array([0.2, 0.5])))
+    with pytest.raises(ValueError, match=r"variance is unbounded"):
+        vrf_simpson(Gains(0.5, 0.2, 0.2))  # alpha beta + alpha gamma/2 - gamma < 0 (eq 47)
+
+
+def test_bad_arguments():
+    with pytest.raises(ValueError, match=r"gains must be an abglib.Gains, got tuple"):
+        vrf((0.5, 0.2))
+    with pytest.raises(ValueError, match=r"dt must be > 0, got -1\.0"):
+        vrf(Gains(0.5, 0.2), dt=-1.0)
+    with pytest.raises(ValueError, match=r"theta must satisfy 0 <= theta < 1, got 1\.2"):
+        vrf_standard_abg(1.2)
+    with pytest.raises(ValueError, match=r"theta must satisfy 0 <= theta < 1, got 1\.0"):
+        vrf_standard_ab(1.0)
+    with pytest.raises(ValueError, match=r"needs gamma == 0, got gamma=0\.02"):
+        vrf_benedict_ab(Gains(0.5, 0.2, 0.02))
