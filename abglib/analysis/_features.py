@@ -1,0 +1,469 @@
+"""Frequency-domain features of the position response (seed 000, "Analytical expressions").
+
+Exact features of :math:`|\\bar X/X|` (and of :math:`|X_p/X|`): the value at
+:math:`\\omega T = \\pi` (eq 50), the frequency at which the response crosses a level
+(-3 dB, -6 dB, unity), the passband peak and overshoot, and the first undesired maximum
+of the design example; next to them, Steelman's printed approximations, eqs 50-59, kept
+*as printed*.
+
+The exact routes work on :math:`|H|^2` as a rational function of
+:math:`q = |e^{j\\omega T} - 1|^2 = 2(1 - \\cos\\omega T) = 4\\sin^2(\\omega T/2)`,
+:math:`0 \\le q \\le 4`, which is well conditioned at the small :math:`\\omega T` where the
+features of a smoothing tracker lie. Each exact feature has two routes selected by
+``method``: ``"poly"`` (roots of a polynomial in ``q``) and ``"grid"`` (dense grid of the
+complex response, then ``brentq`` / bounded scalar refinement); the tests check them
+against each other.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.polynomial import Polynomial
+from scipy.optimize import brentq, minimize_scalar
+
+from .._checks import AbglibValueError, check_finite, check_in_range, describe
+from ..gains import Gains
+from ._stability import is_stable
+from ._transfer import _check_gains, _check_output, _w_forms, frequency_response
+
+__all__ = [
+    "POSITION_OUTPUTS",
+    "first_undesired_max",
+    "min_gain_at_pi",
+    "min_gain_steelman_eq50",
+    "omega_3db_eq53",
+    "omega_at_gain",
+    "omega_max_eq54",
+    "omega_unity_eq51",
+    "omega_unity_eq52",
+    "overshoot_eq55",
+    "overshoot_eq55_terms",
+    "peak",
+]
+
+#: Outputs with unit DC gain, for which a level, a peak and an overshoot are defined.
+POSITION_OUTPUTS = ("x_smooth", "x_pred")
+_METHODS = ("poly", "grid")
+
+# dense grid of the "grid" route: uniform on [0, pi] plus geometric towards 0, where the
+# passband of a heavily smoothing tracker lies (alpha = 0.01 peaks near wT = 0.004)
+_GRID = np.union1d(np.linspace(0.0, np.pi, 8193), np.geomspace(1e-7, np.pi, 4097))
+
+
+# --------------------------------------------------------------------------- helpers
+def _out(arr):
+    arr = np.asarray(arr, dtype=float)
+    return float(arr) if arr.ndim == 0 else arr
+
+
+def _check_method(method):
+    if method not in _METHODS:
+        raise AbglibValueError(
+            f"method must be one of {', '.join(map(repr, _METHODS))}, got {method!r}"
+        )
+    return method
+
+
+def _require_stable(gains: Gains):
+    ok = np.asarray(is_stable(gains))
+    if not ok.all():
+        bad = gains if gains.shape == () else gains[tuple(np.argwhere(~ok)[0])]
+        raise AbglibValueError(
+            "gains must be stable (all poles strictly inside the unit circle) for a "
+            f"steady-state frequency response, got {bad!r}"
+        )
+
+
+def _each(gains: Gains, fn):
+    """Apply ``fn`` (scalar Gains -> tuple of floats) over a bank; arrays of shape S."""
+    if gains.shape == ():
+        return fn(gains)
+    results = [fn(gains[idx]) for idx in np.ndindex(gains.shape)]
+    return tuple(np.array(col).reshape(gains.shape) for col in zip(*results, strict=True))
+
+
+def _mag2_q(coeffs_w) -> Polynomial:
+    """:math:`|p|^2` on the unit circle as a polynomial in :math:`q = |z - 1|^2`.
+
+    ``coeffs_w`` are the coefficients of ``p`` in ascending powers of :math:`w = z - 1`
+    (the form of seed 000, eqs 36-40). With :math:`w\\bar w = q` and
+    :math:`w + \\bar w = -q`, the power sums :math:`s_d = w^d + \\bar w^d` obey
+    :math:`s_0 = 2`, :math:`s_1 = -q`, :math:`s_d = -q(s_{d-1} + s_{d-2})`, and
+    :math:`|p|^2 = \\sum_k c_k^2 q^k + \\sum_{k<l} c_k c_l q^k s_{l-k}` -- no cancellation
+    at small :math:`q`, where the features of a smoothing tracker lie.
+    """
+    c = [float(v) for v in coeffs_w]
+    q = Polynomial([0.0, 1.0])
+    sums = [Polynomial([2.0]), -q]
+    for _ in range(2, len(c)):
+        sums.append(-q * (sums[-1] + sums[-2]))
+    out = Polynomial([0.0])
+    for k, ck in enumerate(c):
+        out = out + ck * ck * q**k
+        for l in range(k + 1, len(c)):
+            out = out + ck * c[l] * q**k * sums[l - k]
+    return out
+
+
+def _omega_of_q(q):
+    return 2.0 * np.arcsin(np.sqrt(np.clip(q, 0.0, 4.0)) / 2.0)
+
+
+def _real_roots_q(poly: Polynomial):
+    coef = poly.coef
+    if not np.any(coef):
+        return np.array([])
+    roots = poly.roots()
+    scale = 1.0 + np.abs(roots)
+    real = roots[np.abs(roots.imag) <= 1e-7 * scale].real
+    return real[(real >= -1e-12) & (real <= 4.0 + 1e-12)]
+
+
+def _mag2_polys(gains: Gains, output: str):
+    """``(P, Q)`` with :math:`|H|^2 = P(q)/Q(q)` for one scalar gain set (a factor
+    :math:`z^k` of the numerator has modulus 1 and drops out)."""
+    a, b, g = (np.asarray(float(v)) for v in gains)
+    num_w, _, den_w = _w_forms(a, b, g, output, 1.0, reduced=float(g) == 0.0)
+    return _mag2_q(num_w), _mag2_q(den_w)
+
+
+def _peak_scalar(gains: Gains, output: str, method: str):
+    if method == "poly":
+        P, Q = _mag2_polys(gains, output)
+        stationary = _real_roots_q(P.deriv() * Q - P * Q.deriv())
+        q = np.concatenate([[0.0, 4.0], stationary])
+        m2 = P(q) / Q(q)
+        # the global maximum; on ties (flat response, alpha = 1) the lowest frequency
+        top = np.flatnonzero(m2 >= m2.max() * (1.0 - 1e-15))
+        i = int(top[np.argmin(q[top])])
+        return float(_omega_of_q(q[i])), float(np.sqrt(m2[i]) - 1.0)
+
+    def neg_mag2(w):
+        return -(abs(frequency_response(gains, output, w)) ** 2)
+
+    m2 = np.abs(frequency_response(gains, output, _GRID)) ** 2
+    i = int(np.argmax(m2))
+    if i in (0, len(_GRID) - 1):
+        return float(_GRID[i]), float(np.sqrt(m2[i]) - 1.0)
+    res = minimize_scalar(
+        neg_mag2, bounds=(_GRID[i - 1], _GRID[i + 1]), method="bounded", options={"xatol": 1e-13}
+    )
+    w, v = (res.x, -res.fun) if -res.fun >= m2[i] else (_GRID[i], m2[i])
+    return float(w), float(np.sqrt(v) - 1.0)
+
+
+def _omega_at_gain_scalar(gains: Gains, level: float, output: str, method: str):
+    w_pk, _ = _peak_scalar(gains, output, method)
+    if method == "poly":
+        P, Q = _mag2_polys(gains, output)
+        w = _omega_of_q(_real_roots_q(P - level**2 * Q))
+        w = w[w > w_pk * (1 + 1e-9) + 1e-12]
+        return (float(w.min()) if w.size else float("nan"),)
+
+    def excess(x):
+        return abs(frequency_response(gains, output, x)) ** 2 - level**2
+
+    grid = np.union1d(_GRID[_GRID > w_pk], [np.pi])
+    vals = np.abs(frequency_response(gains, output, grid)) ** 2 - level**2
+    if vals[0] == 0.0:
+        return (float(grid[0]),)
+    change = np.flatnonzero(np.sign(vals[1:]) != np.sign(vals[:-1]))
+    if change.size == 0:
+        return (float("nan"),)
+    k = int(change[0])
+    if vals[k + 1] == 0.0:
+        return (float(grid[k + 1]),)
+    return (float(brentq(excess, grid[k], grid[k + 1], xtol=1e-15, rtol=4 * np.finfo(float).eps)),)
+
+
+# --------------------------------------------------------------------------- exact
+def min_gain_at_pi(gains: Gains, output: str = "x_smooth"):
+    """Exact :math:`|H(e^{j\\pi})|`, the response at the Nyquist frequency.
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains, scalars or a bank of shape ``S``.
+    output : {"x_smooth", "x_pred"}, default "x_smooth"
+
+    Returns
+    -------
+    float or array (S...)
+
+    Notes
+    -----
+    From eq 36 at :math:`z = -1`:
+    :math:`\\bar X/X = (2\\alpha - \\beta)/(4 - 2\\alpha - \\beta)` exactly, for every
+    :math:`\\gamma` -- seed 000, eq 50, is exact (in modulus) and indeed independent of
+    :math:`\\gamma`. Whether it is the *minimum* of the response depends on the gains
+    (for :math:`\\alpha > 1` it exceeds 1 and is a maximum); the tests check where.
+    """
+    _check_output(output, POSITION_OUTPUTS)
+    return _out(np.abs(frequency_response(gains, output, np.pi)))
+
+
+def peak(gains: Gains, output: str = "x_smooth", method: str = "poly"):
+    """Exact passband peak: frequency of the maximum of ``|H|`` and the overshoot.
+
+    Parameters
+    ----------
+    gains : Gains
+        Stable canonical gains, scalars or a bank of shape ``S``.
+    output : {"x_smooth", "x_pred"}, default "x_smooth"
+    method : {"poly", "grid"}, default "poly"
+        ``"poly"``: stationary points of :math:`|H|^2` as the real roots in
+        :math:`0 < q < 4` of :math:`P'Q - PQ'` (:math:`|H|^2 = P(q)/Q(q)`), plus the
+        end points. ``"grid"``: maximum on a dense grid, refined by bounded Brent search.
+
+    Returns
+    -------
+    wT_max, overshoot : float or array (S...)
+        ``wT_max`` in radians per sample (0 if the response never exceeds its DC value 1);
+        ``overshoot = max |H| - 1`` (seed 000's definition before eq 55).
+
+    Notes
+    -----
+    The global maximum of :math:`|H(e^{j\\omega T})|` over :math:`0 \\le \\omega T \\le
+    \\pi`. For ``x_smooth`` and :math:`0 < \\alpha < 1`,
+    :math:`|H|^2 - 1 = (1-\\alpha) q^2 (2\\beta - q) / |\\Delta|^2`, so the response
+    exceeds 1 exactly for :math:`q < 2\\beta` and the peak lies below eq 51's frequency.
+    Compare the approximations :func:`omega_max_eq54` and :func:`overshoot_eq55`.
+    """
+    gains = _check_gains(gains)
+    _check_output(output, POSITION_OUTPUTS)
+    _check_method(method)
+    _require_stable(gains)
+    return _each(gains, lambda g: _peak_scalar(g, output, method))
+
+
+def omega_at_gain(gains: Gains, level_db, output: str = "x_smooth", method: str = "poly"):
+    """Exact ``wT`` where ``|H|`` first falls through a level above the passband peak.
+
+    Parameters
+    ----------
+    gains : Gains
+        Stable canonical gains, scalars or a bank of shape ``S``.
+    level_db : float
+        The level :math:`20\\log_{10}|H|` in dB: -3 (pass-band edge), -6, 0 (unity), ...
+    output : {"x_smooth", "x_pred"}, default "x_smooth"
+    method : {"poly", "grid"}, default "poly"
+        ``"poly"``: real roots in ``q`` of :math:`|N|^2 - L^2|\\Delta|^2` (a cubic in
+        :math:`\\cos\\omega T` for the alpha-beta-gamma tracker, the equation Steelman
+        calls intractable before eq 51). ``"grid"``: first sign change on a dense grid,
+        then :func:`scipy.optimize.brentq`.
+
+    Returns
+    -------
+    float or array (S...)
+        The smallest :math:`\\omega T > \\omega T_{max}` (:func:`peak`) with
+        :math:`|H| = 10^{L_{dB}/20}`; ``nan`` where the response does not reach the level
+        above the peak (a level above the peak, or below the value at :math:`\\pi`).
+    """
+    gains = _check_gains(gains)
+    _check_output(output, POSITION_OUTPUTS)
+    _check_method(method)
+    level = check_finite("level_db", level_db)
+    if level.ndim:
+        raise AbglibValueError(f"level_db must be a scalar, got shape {level.shape}")
+    _require_stable(gains)
+    lin = 10.0 ** (float(level) / 20.0)
+    (w,) = _each(gains, lambda g: _omega_at_gain_scalar(g, lin, output, method))
+    return _out(w)
+
+
+def first_undesired_max(gains: Gains, output: str = "x_smooth", method: str = "poly"):
+    """Exact ``wT`` of the first maximum above the pass band: the alias of the peak.
+
+    Parameters
+    ----------
+    gains : Gains
+        Stable canonical gains, scalars or a bank of shape ``S``.
+    output : {"x_smooth", "x_pred"}, default "x_smooth"
+    method : {"poly", "grid"}, default "poly"
+
+    Returns
+    -------
+    float or array (S...)
+        :math:`2\\pi - \\omega T_{max}`.
+
+    Notes
+    -----
+    The response is periodic in :math:`\\omega T` with period :math:`2\\pi` and
+    :math:`|H(e^{-j\\omega T})| = |H(e^{j\\omega T})|`, so the passband peak recurs at
+    :math:`2\\pi - \\omega T_{max}`: seed 000, design example, step 3
+    (":math:`\\omega = (2\\pi - .04)/T`" for :math:`\\alpha = .1`).
+    """
+    w, _ = peak(gains, output, method)
+    return _out(2.0 * np.pi - np.asarray(w))
+
+
+# --------------------------------------------------------------------------- printed
+def min_gain_steelman_eq50(gains: Gains):
+    """Seed 000, eq 50, as printed: :math:`(2\\alpha - \\beta)/(4 - 2\\alpha - \\beta)`.
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains, scalars or a bank of shape ``S`` (``gamma`` is not used).
+
+    Returns
+    -------
+    float or array (S...)
+        The signed value (it is :math:`\\bar X/X` at :math:`z = -1`, a real number,
+        negative when :math:`\\beta > 2\\alpha`); compare its modulus with
+        :func:`min_gain_at_pi`.
+    """
+    a, b, _ = _check_gains(gains).as_arrays()
+    den = 4.0 - 2.0 * a - b
+    if np.any(den == 0.0):
+        raise AbglibValueError(
+            f"eq 50 needs 4 - 2 alpha - beta != 0 (the stability boundary), got {describe(den)}"
+        )
+    return _out((2.0 * a - b) / den)
+
+
+def _beta(gains, low=0.0, high=None, **kw):
+    _, b, _ = _check_gains(gains).as_arrays()
+    return check_in_range("beta", b, low, high, **kw)
+
+
+def omega_unity_eq51(gains: Gains):
+    """Seed 000, eq 51: :math:`\\omega T = \\arccos(1 - \\beta)`, where :math:`|\\bar X/X| = 1`.
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains with :math:`0 \\le \\beta \\le 2`, scalars or a bank of shape ``S``.
+
+    Returns
+    -------
+    float or array (S...)
+
+    Notes
+    -----
+    Exact, for every :math:`\\alpha \\ne 1` and every :math:`\\gamma`: from eqs 36 and 40,
+    :math:`\\Delta - N = (1 - \\alpha)(z-1)^3`, which gives
+    :math:`|\\Delta|^2 - |N|^2 = (1-\\alpha)\\,q^2(q - 2\\beta)`,
+    :math:`q = 2(1 - \\cos\\omega T)`; the only nonzero root is :math:`\\cos\\omega T =
+    1 - \\beta`. (For :math:`\\alpha = 1`, :math:`\\bar X \\equiv X`.)
+    """
+    b = _beta(gains, 0.0, 2.0, low_inclusive=True, high_inclusive=True)
+    return _out(np.arccos(1.0 - b))
+
+
+def omega_unity_eq52(gains: Gains):
+    """Seed 000, eq 52: :math:`\\omega T \\approx \\sqrt{2\\beta}` (small-angle form of eq 51).
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains with :math:`\\beta \\ge 0`, scalars or a bank of shape ``S``.
+
+    Returns
+    -------
+    float or array (S...)
+    """
+    return _out(np.sqrt(2.0 * _beta(gains, 0.0, low_inclusive=True)))
+
+
+def omega_3db_eq53(gains: Gains, exponent: float = -0.15):
+    """Seed 000, eq 53: straight-line (log-log) estimate of the -3 dB frequency.
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains with :math:`0 < \\alpha < 2`, :math:`\\beta > 0`; scalars or a bank.
+    exponent : float, default -0.15
+        ``-0.15`` for -3 dB (eq 53 as printed); ``-0.3`` for the -6 dB estimate of
+        Table 3 ("-.15 in the exponent of (53) becomes -.3"). In general
+        ``level_db / 20``.
+
+    Returns
+    -------
+    float or array (S...)
+
+    Notes
+    -----
+    .. math::
+        \\omega T \\approx \\sqrt{2\\beta}\\;
+        10^{\\,e\\,\\ln(\\pi/\\sqrt{2\\beta})/\\ln(\\alpha/2)},\\qquad e = -0.15,
+
+    the line from (:math:`\\sqrt{2\\beta}`, 0 dB) to (:math:`\\pi`,
+    :math:`20\\log_{10}(\\alpha/2)` dB, eq 50 for small :math:`\\beta`) on log-log axes.
+    """
+    a, _, _ = _check_gains(gains).as_arrays()
+    a = check_in_range("alpha", a, 0.0, 2.0)
+    b = _beta(gains, 0.0)
+    e = check_finite("exponent", exponent)
+    w1 = np.sqrt(2.0 * b)
+    return _out(w1 * 10.0 ** (e * np.log(np.pi / w1) / np.log(a / 2.0)))
+
+
+def omega_max_eq54(gains: Gains):
+    """Seed 000, eq 54: :math:`\\omega T_{max} \\approx \\sqrt{\\beta/2}`.
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains with :math:`\\beta \\ge 0`, scalars or a bank of shape ``S``.
+
+    Returns
+    -------
+    float or array (S...)
+        Half of eq 52's unity-gain frequency.
+    """
+    return _out(np.sqrt(_beta(gains, 0.0, low_inclusive=True) / 2.0))
+
+
+def overshoot_eq55_terms(gains: Gains) -> dict:
+    """The auxiliary quantities of seed 000, eqs 56-59, as printed.
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains, scalars or a bank of shape ``S``.
+
+    Returns
+    -------
+    dict
+        ``n`` (eq 59), ``M`` (eq 56), ``N2`` (eq 57), ``D`` (eq 58), each a float or
+        array (S...).
+
+    Notes
+    -----
+    :math:`n = \\alpha\\beta/2 - \\gamma + 3\\beta^2/8`,
+    :math:`M = \\tfrac38\\beta^2(1-\\alpha)(n + \\beta/3)`,
+    :math:`N^2 = \\beta^3(1-\\alpha)^2 n^2/16`, :math:`D = n^2 + \\beta^3/8`.
+    """
+    a, b, g = _check_gains(gains).as_arrays()
+    n = a * b / 2.0 - g + 3.0 / 8.0 * b**2
+    M = 3.0 / 8.0 * b**2 * (1.0 - a) * (n + b / 3.0)
+    N2 = b**3 * (1.0 - a) ** 2 * n**2 / 16.0
+    D = n**2 + b**3 / 8.0
+    return {"n": _out(n), "M": _out(M), "N2": _out(N2), "D": _out(D)}
+
+
+def overshoot_eq55(gains: Gains):
+    """Seed 000, eq 55, as printed: overshoot :math:`\\approx M/D + (M^2 + N^2)/(2D^2)`.
+
+    Parameters
+    ----------
+    gains : Gains
+        Canonical gains with :math:`D \\ne 0` (eq 58; :math:`D > 0` whenever
+        :math:`\\beta > 0`), scalars or a bank of shape ``S``.
+
+    Returns
+    -------
+    float or array (S...)
+
+    Notes
+    -----
+    Steelman's approximation of ``max |Xbar/X| - 1`` at :math:`\\omega T_{max}`, with
+    ``M, N^2, D, n`` from eqs 56-59 (:func:`overshoot_eq55_terms`). Compare the exact
+    :func:`peak`.
+    """
+    t = overshoot_eq55_terms(gains)
+    M, N2, D = (np.asarray(t[k]) for k in ("M", "N2", "D"))
+    if np.any(D == 0.0):
+        raise AbglibValueError(f"eq 55 needs D != 0 (eq 58), got {describe(D)}")
+    return _out(M / D + (M**2 + N2) / (2.0 * D**2))
