@@ -1,0 +1,17 @@
+# abglib replication pipeline: config -> tracker analysis -> tables/figures -> comparison
+# with the published numbers -> versioned reports (see README.md, docs/architecture.md).
+
+
+configfile: "config.yaml"
+
+
+include: "workflow/rules/common.smk"
+include: "workflow/rules/steelman1978.smk"
+include: "workflow/rules/compare.smk"
+include: "workflow/rules/reports.smk"
+
+
+rule all:
+    default_target: True
+    input:
+        all_targets(),

@@ -1,0 +1,437 @@
+"""Published-versus-reproduced tables: ``comparison.csv`` and the scorecard.
+
+Implements ``shared/CONTRACTS.md`` section 3. The published numbers of a source document
+are transcribed once, as the *printed strings*, into ``data/published/<doc>/*.csv`` with
+columns ``key, item, quantity, published, where`` (see :data:`PUBLISHED_COLUMNS`); a
+pipeline rule computes the reproduced value of every key with :mod:`abglib`; this module
+joins the two and gives each row a verdict:
+
+``match``
+    ``|reproduced - published| <= tolerance``.
+``explained``
+    not a match, but an *alternative* quantity or interpretation, computed by abglib and
+    shown in the report, reproduces the printed number within tolerance (the note names
+    the alternative and the report section that demonstrates it).
+``mismatch``
+    neither; the note says what is known.
+``not_reproducible``
+    no reproduced value (damaged print, a number read off a lost figure, ...); the note
+    says why.
+
+A qualitative claim has an empty ``published`` field and a boolean ``reproduced`` value
+(the outcome of a check): ``match`` when the check holds, ``mismatch`` otherwise.
+
+The tolerance is half a unit in the last printed digit (:func:`tolerance_from_printed`)
+unless an override (with a reason) is given, e.g. for a value read off a graph.
+
+Numbers are written with a fixed number of significant digits (:func:`format_number`) so
+that a rebuild gives identical bytes.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from decimal import Decimal, InvalidOperation
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from ._checks import AbglibValueError
+
+__all__ = [
+    "ALTERNATIVE_COLUMNS",
+    "COMPARISON_COLUMNS",
+    "PUBLISHED_COLUMNS",
+    "REPRODUCED_COLUMNS",
+    "SCORECARD_COLUMNS",
+    "VERDICTS",
+    "Alternative",
+    "build_comparison",
+    "format_number",
+    "format_table",
+    "parse_printed",
+    "read_published",
+    "scorecard",
+    "tolerance_from_printed",
+    "verdict",
+    "write_csv",
+]
+
+#: Columns of ``results/<doc>/comparison.csv``, in contract order.
+COMPARISON_COLUMNS = [
+    "doc",
+    "item",
+    "quantity",
+    "published",
+    "reproduced",
+    "abs_err",
+    "rel_err",
+    "tolerance",
+    "verdict",
+    "note",
+]
+#: Verdicts, in scorecard column order.
+VERDICTS = ["match", "mismatch", "explained", "not_reproducible"]
+#: Columns of ``results/scorecard.csv``.
+SCORECARD_COLUMNS = ["doc", *VERDICTS, "total"]
+#: Required columns of a transcription file ``data/published/<doc>/*.csv``.
+PUBLISHED_COLUMNS = ["key", "item", "quantity", "published", "where"]
+#: Columns of the reproduced-values table written by a document's reproducing rule.
+REPRODUCED_COLUMNS = ["key", "reproduced", "note"]
+#: Columns of the alternatives table written by a document's reproducing rule.
+ALTERNATIVE_COLUMNS = ["key", "alternative", "value", "section"]
+
+#: Default number of significant digits written to deterministic tables.
+SIGNIFICANT_DIGITS = 10
+
+# a relative slack on the tolerance so that an error of exactly half a unit in the last
+# digit, computed in binary floating point, is not lost to representation error
+_TOL_SLACK = 1e-9
+
+
+# --------------------------------------------------------------------------- numbers
+def parse_printed(text: str) -> Decimal:
+    """Parse a number as printed (``'.135'``, ``'-3'``, ``'1.20'``, ``'2e-3'``) exactly.
+
+    Raises
+    ------
+    AbglibValueError
+        If ``text`` is not a plain decimal number.
+    """
+    s = str(text).strip().replace("\u2212", "-")  # a typeset minus sign
+    try:
+        value = Decimal(s)
+    except InvalidOperation:
+        raise AbglibValueError(
+            f"published must be a number as printed (e.g. '.135', '1452', '-3'), got {text!r}"
+        ) from None
+    if not value.is_finite():
+        raise AbglibValueError(f"published must be finite, got {text!r}")
+    return value
+
+
+def tolerance_from_printed(text: str) -> float:
+    """Half a unit in the last printed digit of ``text``.
+
+    ``'0.0402'`` → 5e-5, ``'.135'`` → 5e-4, ``'1.20'`` → 5e-3 (the trailing zero is a
+    printed digit), ``'23'``, ``'1452'`` and ``'-3'`` → 0.5, ``'2.5e-3'`` → 5e-5.
+
+    Examples
+    --------
+    >>> tolerance_from_printed('.135')
+    0.0005
+    >>> tolerance_from_printed('1452')
+    0.5
+    """
+    exponent = parse_printed(text).as_tuple().exponent
+    return float(Decimal(5) * Decimal(10) ** (exponent - 1))
+
+
+def format_number(x, digits: int = SIGNIFICANT_DIGITS) -> str:
+    """Format a number with ``digits`` significant digits, deterministically.
+
+    Empty string for ``None``/NaN; booleans as ``True``/``False``; ``-0`` becomes ``0``.
+    """
+    if x is None:
+        return ""
+    if isinstance(x, (bool, np.bool_)):
+        return "True" if x else "False"
+    if isinstance(x, str):
+        return x
+    xf = float(x)
+    if math.isnan(xf):
+        return ""
+    if xf == 0.0:
+        return "0"
+    return f"{xf:.{digits}g}"
+
+
+def format_table(df: pd.DataFrame, digits: int = SIGNIFICANT_DIGITS) -> pd.DataFrame:
+    """Copy of ``df`` with every float column formatted by :func:`format_number`."""
+    out = df.copy()
+    for col in out.columns:
+        if pd.api.types.is_float_dtype(out[col]) or out[col].dtype == object:
+            out[col] = [format_number(v, digits) if not isinstance(v, str) else v for v in out[col]]
+    return out
+
+
+def write_csv(df: pd.DataFrame, path, digits: int = SIGNIFICANT_DIGITS) -> None:
+    """Write ``df`` as CSV with fixed significant digits, atomically.
+
+    The table goes to a temporary file beside ``path`` that replaces ``path`` only once
+    complete, so an interrupted run never leaves a half-written table behind.
+    """
+    from .pipeline import atomic_output
+
+    text = format_table(df, digits).to_csv(index=False, lineterminator="\n")
+    with atomic_output(path) as tmp:
+        tmp.write_text(text, encoding="utf-8", newline="")
+
+
+# --------------------------------------------------------------------------- inputs
+def read_published(paths: Iterable) -> pd.DataFrame:
+    """Read and check transcription files; ``published`` stays the printed string.
+
+    Raises
+    ------
+    AbglibValueError
+        Naming the file and column when a required column is missing, a key is
+        duplicated, or a published value is not a number as printed.
+    """
+    frames = []
+    for p in sorted(Path(p) for p in paths):
+        df = pd.read_csv(p, dtype=str, keep_default_na=False, comment="#")
+        missing = [c for c in PUBLISHED_COLUMNS if c not in df.columns]
+        if missing:
+            raise AbglibValueError(
+                f"{p.name}: published table must have columns {PUBLISHED_COLUMNS}, "
+                f"missing {missing}"
+            )
+        for key, text in zip(df["key"], df["published"], strict=True):
+            if text.strip():
+                try:
+                    parse_printed(text)
+                except AbglibValueError as exc:
+                    raise AbglibValueError(f"{p.name}, key {key!r}: {exc}") from None
+        frames.append(df[PUBLISHED_COLUMNS])
+    if not frames:
+        raise AbglibValueError("no published tables given")
+    out = pd.concat(frames, ignore_index=True)
+    dup = out["key"][out["key"].duplicated()].tolist()
+    if dup:
+        raise AbglibValueError(f"published keys must be unique, got duplicates {dup}")
+    return out
+
+
+@dataclass(frozen=True)
+class Alternative:
+    """An alternative reading of one published number, computed by abglib.
+
+    Attributes
+    ----------
+    key : str
+        The published key it explains.
+    alternative : str
+        What was computed instead, in words (goes into the note).
+    value : float
+        Its value.
+    section : str
+        The report section that demonstrates it.
+    """
+
+    key: str
+    alternative: str
+    value: float
+    section: str
+
+
+# --------------------------------------------------------------------------- verdicts
+def verdict(published, reproduced, tolerance, alternatives: Iterable[Alternative] = ()):
+    """Verdict and the explaining alternative (or None) for one row.
+
+    Parameters
+    ----------
+    published : str
+        The printed number, or ``''`` for a qualitative claim.
+    reproduced : float, bool or None
+        Our value; for a qualitative claim, whether the check holds; None or NaN when
+        not reproducible.
+    tolerance : float or None
+        Accepted absolute error (ignored for a qualitative claim).
+    alternatives : iterable of Alternative
+        Alternative readings; the first within tolerance of the printed number explains
+        a non-match.
+
+    Returns
+    -------
+    (str, Alternative or None)
+    """
+    if _is_missing(reproduced):
+        return "not_reproducible", None
+    if not str(published).strip():
+        return ("match" if _as_bool(reproduced) else "mismatch"), None
+    pub = float(parse_printed(published))
+    limit = tolerance * (1.0 + _TOL_SLACK)
+    if abs(float(reproduced) - pub) <= limit:
+        return "match", None
+    for alt in alternatives:
+        if not _is_missing(alt.value) and abs(float(alt.value) - pub) <= limit:
+            return "explained", alt
+    return "mismatch", None
+
+
+def _is_missing(x) -> bool:
+    if x is None:
+        return True
+    if isinstance(x, str):
+        return not x.strip()
+    try:
+        return bool(np.isnan(x))
+    except TypeError:
+        return False
+
+
+def _as_bool(x) -> bool:
+    if isinstance(x, str):
+        s = x.strip().lower()
+        if s in ("true", "1", "1.0"):
+            return True
+        if s in ("false", "0", "0.0"):
+            return False
+        raise AbglibValueError(f"a qualitative check must be True or False, got {x!r}")
+    return bool(x)
+
+
+def build_comparison(
+    doc: str,
+    published: pd.DataFrame,
+    reproduced: pd.DataFrame,
+    alternatives: pd.DataFrame | None = None,
+    overrides: Mapping[str, Mapping] | None = None,
+) -> pd.DataFrame:
+    """Join published and reproduced values into the contract's comparison table.
+
+    Parameters
+    ----------
+    doc : str
+        Document key (``shared/seeds/README.md``).
+    published : DataFrame
+        From :func:`read_published` (columns :data:`PUBLISHED_COLUMNS`, strings).
+    reproduced : DataFrame
+        Columns :data:`REPRODUCED_COLUMNS`: one row per key; ``reproduced`` empty/NaN when
+        not reproducible; ``note`` explains any non-match (required for
+        ``not_reproducible`` rows).
+    alternatives : DataFrame, optional
+        Columns :data:`ALTERNATIVE_COLUMNS` (several rows per key allowed).
+    overrides : mapping, optional
+        ``{key: {"tolerance": float, "reason": str}}``, e.g. for values read off a graph.
+
+    Returns
+    -------
+    DataFrame with columns :data:`COMPARISON_COLUMNS`, in the order of ``published``.
+
+    Raises
+    ------
+    AbglibValueError
+        A published key without a reproduced row (or the reverse), an override for an
+        unknown key or without a reason, or a not-reproducible row without a note.
+    """
+    overrides = dict(overrides or {})
+    rep = _index_unique(reproduced, "reproduced")
+    pub_keys = list(published["key"])
+    missing = [k for k in pub_keys if k not in rep.index]
+    extra = [k for k in rep.index if k not in set(pub_keys)]
+    if missing or extra:
+        raise AbglibValueError(
+            f"{doc}: reproduced keys must equal published keys; "
+            f"not reproduced: {missing}, not published: {extra}"
+        )
+    unknown = sorted(set(overrides) - set(pub_keys))
+    if unknown:
+        raise AbglibValueError(f"{doc}: tolerance override for unknown keys {unknown}")
+    alts: dict[str, list[Alternative]] = {}
+    if alternatives is not None and len(alternatives):
+        bad = sorted(set(alternatives["key"]) - set(pub_keys))
+        if bad:
+            raise AbglibValueError(f"{doc}: alternatives for unknown keys {bad}")
+        for row in alternatives.itertuples(index=False):
+            alts.setdefault(row.key, []).append(
+                Alternative(row.key, row.alternative, row.value, row.section)
+            )
+
+    rows = []
+    for row in published.itertuples(index=False):
+        r = rep.loc[row.key]
+        value, note = r["reproduced"], _text(r.get("note", ""))
+        qualitative = not row.published.strip()
+        tol, tol_note = None, ""
+        if not qualitative:
+            tol = tolerance_from_printed(row.published)
+            if row.key in overrides:
+                ov = overrides[row.key]
+                reason = _text(ov.get("reason", ""))
+                if not reason:
+                    raise AbglibValueError(
+                        f"{doc}: tolerance override for {row.key!r} must give a reason"
+                    )
+                tol = float(ov["tolerance"])
+                tol_note = f"tolerance {format_number(tol)} ({reason})"
+        v, alt = verdict(row.published, value, tol, alts.get(row.key, ()))
+        abs_err = rel_err = None
+        if not qualitative and v != "not_reproducible":
+            pub = float(parse_printed(row.published))
+            abs_err = float(value) - pub
+            rel_err = abs_err / abs(pub) if pub != 0 else None
+        if v == "not_reproducible" and not note:
+            raise AbglibValueError(
+                f"{doc}: not-reproducible key {row.key!r} needs a note saying why"
+            )
+        if v == "explained":
+            note = (
+                f"{alt.alternative} gives {format_number(alt.value, 6)}, "
+                f"which matches the printed value; see report section '{alt.section}'"
+                + (f". {note}" if note else "")
+            )
+        elif v == "mismatch" and not note:
+            note = (
+                f"not explained: differs by {format_number(abs_err, 3)} "
+                f"({format_number(abs(abs_err) / tol, 3)} tolerances)"
+                if abs_err is not None
+                else "qualitative check does not hold"
+            )
+        elif v == "match":
+            note = note if qualitative else ""
+        if tol_note:
+            note = f"{note}; {tol_note}" if note else tol_note
+        rows.append(
+            {
+                "doc": doc,
+                "item": row.item,
+                "quantity": row.quantity,
+                "published": row.published,
+                "reproduced": _reproduced_value(value, qualitative),
+                "abs_err": abs_err,
+                "rel_err": rel_err,
+                "tolerance": tol,
+                "verdict": v,
+                "note": note,
+            }
+        )
+    return pd.DataFrame(rows, columns=COMPARISON_COLUMNS)
+
+
+def _reproduced_value(value, qualitative: bool):
+    if _is_missing(value):
+        return None
+    return _as_bool(value) if qualitative else float(value)
+
+
+def _text(x) -> str:
+    return "" if _is_missing(x) else str(x).strip()
+
+
+def _index_unique(df: pd.DataFrame, name: str) -> pd.DataFrame:
+    dup = df["key"][df["key"].duplicated()].tolist()
+    if dup:
+        raise AbglibValueError(f"{name} keys must be unique, got duplicates {dup}")
+    return df.set_index("key")
+
+
+def scorecard(comparisons: Iterable[pd.DataFrame]) -> pd.DataFrame:
+    """One row per document: the count of each verdict and the total (contract section 3)."""
+    rows = []
+    for comp in comparisons:
+        docs = comp["doc"].unique()
+        if len(docs) != 1:
+            raise AbglibValueError(f"a comparison table must hold one document, got {list(docs)}")
+        counts = comp["verdict"].value_counts()
+        unknown = sorted(set(counts.index) - set(VERDICTS))
+        if unknown:
+            raise AbglibValueError(f"verdict must be one of {VERDICTS}, got {unknown}")
+        row = {"doc": docs[0], **{v: int(counts.get(v, 0)) for v in VERDICTS}}
+        row["total"] = int(len(comp))
+        rows.append(row)
+    return pd.DataFrame(rows, columns=SCORECARD_COLUMNS).sort_values("doc", ignore_index=True)

@@ -1,0 +1,163 @@
+"""Glue shared by the workflow's rules, scripts and report notebooks.
+
+Small, tested helpers so that no rule or script repeats them: turning a gain
+specification of ``config.yaml`` into :class:`abglib.Gains`, building an omega*T grid,
+explaining a config that fails its schema, and sending a script's stderr to its log.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import logging
+import os
+import sys
+import tempfile
+from collections.abc import Mapping
+from pathlib import Path
+
+import numpy as np
+
+from ._checks import AbglibValueError
+from .gains import Gains
+
+__all__ = [
+    "atomic_output",
+    "DESIGNS",
+    "OUTPUT_LABELS",
+    "config_errors",
+    "curve_label",
+    "gains_from_spec",
+    "log_to",
+    "prepend_pythonpath",
+    "wt_grid",
+]
+
+#: Gain designs a config curve may name (seed 000: eqs 22-24, the alpha-beta analogue, 28-30).
+DESIGNS = ("standard_abg", "standard_ab", "qd")
+
+#: How each transfer-function output is written in seed 000 (times the curve's scale).
+OUTPUT_LABELS = {
+    "x_smooth": "X̄/X",
+    "x_pred": "X_p/X",
+    "v_smooth": "T·V̄/X",
+    "a_smooth": "T²·Ā/X",
+}
+
+
+def gains_from_spec(spec: Mapping) -> Gains:
+    """Gains of a config curve ``{design, alpha | m, ...}``.
+
+    ``standard_abg``: critically damped alpha-beta-gamma (seed 000, eqs 22-24) with the
+    given alpha; ``standard_ab``: critically damped alpha-beta (seed 000, p. 5);
+    ``qd``: QD tracker (seed 000, eqs 28-30) with memory ``m``, or the ``m`` that gives
+    the stated alpha.
+    """
+    from . import design
+
+    kind = spec.get("design")
+    if kind not in DESIGNS:
+        raise AbglibValueError(f"design must be one of {list(DESIGNS)}, got {kind!r}")
+    if kind == "qd":
+        if "m" in spec:
+            return design.qd(float(spec["m"]))
+        return design.qd(design.qd_m_from_alpha(float(spec["alpha"])))
+    order = 3 if kind == "standard_abg" else 2
+    return design.standard_from_alpha(float(spec["alpha"]), order)
+
+
+def curve_label(spec: Mapping, gains: Gains) -> str:
+    """Legend text of a config curve, e.g. ``'X̄/X, standard α-β-γ, α=0.3'``."""
+    scale = float(spec.get("scale", 1.0))
+    out = OUTPUT_LABELS[spec["output"]]
+    if scale != 1.0:
+        out = f"{scale:g}·{out}"
+    name = {"standard_abg": "standard α-β-γ", "standard_ab": "standard α-β", "qd": "QD"}
+    label = f"{out}, {name[spec['design']]}, α={float(gains.alpha):.4g}"
+    if spec["design"] == "qd" and "m" in spec:
+        label += f" (m={float(spec['m']):g})"
+    return label
+
+
+def wt_grid(grid: Mapping, kind: str) -> np.ndarray:
+    """omega*T grid from a config grid ``{start, stop_over_pi, n}``.
+
+    ``kind='linear'``: evenly spaced; ``'log'``: log-spaced (``start`` must be > 0).
+    """
+    start, stop, n = float(grid["start"]), float(grid["stop_over_pi"]) * np.pi, int(grid["n"])
+    if kind == "linear":
+        return np.linspace(start, stop, n)
+    if kind == "log":
+        if start <= 0:
+            raise AbglibValueError(f"a log grid needs start > 0, got {start!r}")
+        return np.geomspace(start, stop, n)
+    raise AbglibValueError(f"kind must be one of ['linear', 'log'], got {kind!r}")
+
+
+def config_errors(config: Mapping, schema_path) -> list[str]:
+    """Every schema violation of ``config``, one message each naming the key.
+
+    Messages read ``config key 'a.b.c': <what is wrong>``; for an unknown key they list
+    the allowed keys, for a bad value the allowed values (jsonschema says these).
+    """
+    import jsonschema
+    import yaml
+
+    schema = yaml.safe_load(Path(schema_path).read_text(encoding="utf-8"))
+    validator = jsonschema.Draft202012Validator(schema)
+    messages = []
+    for err in sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.path))):
+        where = ".".join(str(p) for p in err.absolute_path) or "<top level>"
+        msg = err.message
+        if err.validator == "additionalProperties":
+            allowed = sorted(err.schema.get("properties", {}))
+            patterns = sorted(err.schema.get("patternProperties", {}))
+            msg += f"; allowed keys: {', '.join(allowed + patterns) or '(free-form)'}"
+        messages.append(f"config key '{where}': {msg}")
+    return messages
+
+
+def log_to(path) -> logging.Logger:
+    """Send stderr and a logger named ``abglib.pipeline`` to the rule's log file.
+
+    Call first thing in a workflow script (``log_to(snakemake.log[0])``).
+    """
+    fh = open(path, "w", encoding="utf-8")  # noqa: SIM115 - lives as long as the script
+    sys.stderr = fh
+    logger = logging.getLogger("abglib.pipeline")
+    logger.handlers[:] = [logging.StreamHandler(fh)]
+    logger.setLevel(logging.INFO)
+    logging.captureWarnings(True)
+    return logger
+
+
+def prepend_pythonpath(path) -> None:
+    """Put ``path`` first on ``PYTHONPATH`` for subprocesses (the workflow's jobs).
+
+    So that every job imports abglib from the repository that holds the Snakefile, in
+    whatever environment runs it (e.g. ``snakemake --sdm conda``).
+    """
+    parts = [str(path)] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
+    os.environ["PYTHONPATH"] = os.pathsep.join(dict.fromkeys(parts))
+
+
+@contextlib.contextmanager
+def atomic_output(path):
+    """Yield a temporary path beside ``path``; on success it replaces ``path`` atomically.
+
+    On any error the temporary file is removed and ``path`` is left as it was, so an
+    interrupted or failed job never leaves a half-written output that a rerun would trust.
+    The file gets the usual permissions (``0o666`` minus the umask), not ``mkstemp``'s 0600.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(fd)
+    try:
+        yield Path(tmp)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise

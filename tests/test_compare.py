@@ -1,0 +1,238 @@
+"""Published-versus-reproduced logic (abglib.compare; shared/CONTRACTS.md §3)."""
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from abglib import AbglibValueError
+from abglib.compare import (
+    COMPARISON_COLUMNS,
+    Alternative,
+    build_comparison,
+    format_number,
+    read_published,
+    scorecard,
+    tolerance_from_printed,
+    verdict,
+    write_csv,
+)
+
+
+# printed strings of seed 000 (Steelman 1978) and the half unit of their last digit
+@pytest.mark.parametrize(
+    ("printed", "tol"),
+    [
+        (".135", 5e-4),  # design example, omega*T at -3 dB
+        ("0.0014", 5e-5),  # Table 1, gamma
+        ("1452", 0.5),  # design example, omega of the first undesired maximum
+        ("235", 0.5),  # design example, samples per second
+        ("-3", 0.5),  # dB level
+        ("1.20", 5e-3),  # Table 3: the trailing zero is a printed digit
+        ("0.0402", 5e-5),  # Table 5
+        ("23", 0.5),  # design example, dB down
+        ("0.13325", 5e-6),  # Table 5
+        ("2.5e-3", 5e-5),  # scientific notation keeps its mantissa digits
+        ("\u22123", 0.5),  # a typeset minus sign
+    ],
+)
+def test_tolerance_from_printed_precision(printed, tol):
+    assert tolerance_from_printed(printed) == pytest.approx(tol, rel=1e-12)
+
+
+@pytest.mark.parametrize("bad", ["", "about 23", "1,452", "nan", "inf"])
+def test_tolerance_rejects_non_numbers(bad):
+    with pytest.raises(AbglibValueError, match="published must be"):
+        tolerance_from_printed(bad)
+
+
+def test_verdict_match_at_exactly_half_a_unit():
+    # 0.1345 vs '.135': error 5e-4, exactly the tolerance (binary rounding must not flip it)
+    assert verdict(".135", 0.1345, 5e-4)[0] == "match"
+    assert verdict(".135", 0.13449, 5e-4)[0] == "mismatch"
+
+
+def test_verdicts_numeric_and_missing():
+    assert verdict("1452", 1451.9, 0.5) == ("match", None)
+    assert verdict("1452", 1462.6, 0.5) == ("mismatch", None)
+    assert verdict("1452", None, 0.5) == ("not_reproducible", None)
+    assert verdict("1452", float("nan"), 0.5) == ("not_reproducible", None)
+    assert verdict("1452", "", 0.5) == ("not_reproducible", None)
+
+
+def test_verdict_qualitative():
+    assert verdict("", True, None)[0] == "match"
+    assert verdict("", "False", None)[0] == "mismatch"
+    with pytest.raises(AbglibValueError, match="True or False"):
+        verdict("", "maybe", None)
+
+
+def test_verdict_explained_only_by_an_alternative_within_tolerance():
+    near = Alternative("k", "arithmetic on the printed inputs", 1451.9, "3. Design example")
+    far = Alternative("k", "something else", 1440.0, "3. Design example")
+    assert verdict("1452", 1462.6, 0.5, [far]) == ("mismatch", None)
+    v, alt = verdict("1452", 1462.6, 0.5, [far, near])
+    assert v == "explained" and alt is near
+    # a match never needs an explanation
+    assert verdict("1452", 1452.2, 0.5, [near]) == ("match", None)
+
+
+def _published():
+    return pd.DataFrame(
+        {
+            "key": ["a", "b", "c", "d", "e"],
+            "item": ["Table 1, beta", "p. 8, omega", "p. 8, rate", "Fig. 7", "eq 50 claim"],
+            "quantity": ["gain", "1/s", "1/s", "lost figure", "minimum at pi"],
+            "published": ["0.0356", "1452", "235", "0.5", ""],
+            "where": ["Table 1"] * 5,
+        }
+    )
+
+
+def _reproduced():
+    return pd.DataFrame(
+        {
+            "key": ["a", "b", "c", "d", "e"],
+            "reproduced": ["0.03558372292", "1462.64", "234.29", "", "True"],
+            "note": ["", "", "1/T is 234.3", "figure lost in the scan", "checked on a grid"],
+        }
+    )
+
+
+def test_build_comparison_contract_columns_and_verdicts():
+    alts = pd.DataFrame(
+        {
+            "key": ["b"],
+            "alternative": ["printed arithmetic"],
+            "value": [1451.9],
+            "section": ["3. The design example"],
+        }
+    )
+    comp = build_comparison("steelman1978", _published(), _reproduced(), alts)
+    assert list(comp.columns) == COMPARISON_COLUMNS
+    assert list(comp["verdict"]) == ["match", "explained", "mismatch", "not_reproducible", "match"]
+    # every non-match has a note; the explained note names the alternative and the section
+    assert all(comp.loc[comp["verdict"] != "match", "note"].str.len() > 0)
+    assert "printed arithmetic" in comp.loc[1, "note"]
+    assert "3. The design example" in comp.loc[1, "note"]
+    # errors: reproduced - published, relative to |published|; empty for a claim
+    assert comp.loc[0, "abs_err"] == pytest.approx(0.03558372292 - 0.0356)
+    assert comp.loc[2, "rel_err"] == pytest.approx((234.29 - 235) / 235)
+    assert pd.isna(comp.loc[4, "abs_err"]) and pd.isna(comp.loc[4, "tolerance"])
+    assert comp.loc[0, "published"] == "0.0356"  # kept as printed
+
+
+def test_build_comparison_tolerance_override_needs_reason():
+    over = {"c": {"tolerance": 1.0, "reason": "read off the graph"}}
+    comp = build_comparison("doc", _published(), _reproduced(), overrides=over)
+    assert comp.loc[2, "verdict"] == "match" and comp.loc[2, "tolerance"] == 1.0
+    assert "read off the graph" in comp.loc[2, "note"]
+    with pytest.raises(AbglibValueError, match="must give a reason"):
+        build_comparison("doc", _published(), _reproduced(), overrides={"c": {"tolerance": 1}})
+    with pytest.raises(AbglibValueError, match="unknown keys"):
+        build_comparison("doc", _published(), _reproduced(), overrides={"zz": {}})
+
+
+def test_build_comparison_rejects_key_drift():
+    with pytest.raises(AbglibValueError, match="not reproduced: \\['e'\\]"):
+        build_comparison("doc", _published(), _reproduced().iloc[:4])
+
+
+def test_not_reproducible_needs_a_note():
+    rep = _reproduced()
+    rep.loc[3, "note"] = ""
+    with pytest.raises(AbglibValueError, match="needs a note"):
+        build_comparison("doc", _published(), rep)
+
+
+def test_scorecard_counts_add_up():
+    comp = build_comparison("steelman1978", _published(), _reproduced())
+    card = scorecard([comp])
+    assert list(card.columns) == [
+        "doc",
+        "match",
+        "mismatch",
+        "explained",
+        "not_reproducible",
+        "total",
+    ]
+    row = card.iloc[0]
+    assert row["match"] + row["mismatch"] + row["explained"] + row["not_reproducible"] == 5
+    assert row["total"] == 5
+
+
+@pytest.mark.parametrize(
+    ("x", "text"),
+    [
+        (0.1, "0.1"),
+        (1.0 / 3.0, "0.3333333333"),
+        (-0.0, "0"),
+        (1452.0, "1452"),
+        (2.0e-12, "2e-12"),
+        (np.float64(0.0402), "0.0402"),
+        (True, "True"),
+        (None, ""),
+        (float("nan"), ""),
+    ],
+)
+def test_format_number_fixed_significant_digits(x, text):
+    assert format_number(x) == text
+
+
+def test_write_csv_is_byte_identical_and_atomic(tmp_path):
+    comp = build_comparison("steelman1978", _published(), _reproduced())
+    a, b = tmp_path / "a.csv", tmp_path / "b.csv"
+    write_csv(comp, a)
+    write_csv(comp.copy(), b)
+    assert a.read_bytes() == b.read_bytes()
+    assert not list(tmp_path.glob(".*.tmp"))  # no temporary file left behind
+    # and the table reads back to the same verdicts
+    back = pd.read_csv(a, dtype=str, keep_default_na=False)
+    assert list(back.columns) == COMPARISON_COLUMNS
+    assert list(back["verdict"]) == list(comp["verdict"])
+
+
+def test_read_published_keeps_printed_strings_and_checks(tmp_path):
+    p = tmp_path / "t.csv"
+    p.write_text("# comment\nkey,item,quantity,published,where\nk,i,q,.1350,p. 8\n")
+    df = read_published([p])
+    assert df.loc[0, "published"] == ".1350"
+    p.write_text("key,item,quantity,published,where\nk,i,q,abc,p. 8\n")
+    with pytest.raises(AbglibValueError, match="t.csv, key 'k'"):
+        read_published([p])
+    p.write_text("key,item,published,where\nk,i,.1,p. 8\n")
+    with pytest.raises(AbglibValueError, match="missing \\['quantity'\\]"):
+        read_published([p])
+
+
+# ------------------------------------------------------------------ seed 000 wiring
+def _load_script(name):
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[1] / "workflow" / "scripts" / f"{name}.py"
+    spec = importlib.util.spec_from_file_location(f"_script_{name}", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_steelman_reproduces_every_published_key_and_alternatives_are_known():
+    from pathlib import Path
+
+    import yaml
+
+    repo = Path(__file__).resolve().parents[1]
+    cfg = yaml.safe_load((repo / "tests" / "data" / "config_small.yaml").read_text())
+    cfg = cfg["steelman1978"]
+    eqs = _load_script("steelman_equations")
+    rep = _load_script("steelman_reproduce")
+    ctx = rep.Context(cfg, eqs.stability_table(cfg["equation_checks"]))
+    published = read_published(sorted((repo / "data" / "published" / "steelman1978").glob("*.csv")))
+    values = rep.reproduced_values(ctx)
+    assert set(values) == set(published["key"])
+    alts = rep.alternatives_table(ctx)
+    assert set(alts["key"]) <= set(published["key"])
+    # every alternative cites a section heading that the report notebook has
+    notebook = (repo / "workflow" / "notebooks" / "steelman1978.py").read_text()
+    for section in set(alts["section"]):
+        assert f"## {section.replace('-', '–')}" in notebook or f"## {section}" in notebook

@@ -1,0 +1,113 @@
+"""The real pipeline end to end on a small config (tests/data/config_small.yaml).
+
+Runs ``snakemake -s <repo>/Snakefile -d <tmp> --configfile config_small.yaml -c2`` twice in
+two clean working directories: the outputs exist, the comparison table has the contract's
+columns, the scorecard adds up, the two runs give byte-identical CSV tables, and a second
+invocation in the same directory schedules nothing.
+"""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+import abglib
+from abglib.compare import COMPARISON_COLUMNS, SCORECARD_COLUMNS, VERDICTS
+
+pytestmark = pytest.mark.pipeline
+
+REPO = Path(__file__).resolve().parents[1]
+SMALL = REPO / "tests" / "data" / "config_small.yaml"
+SNAKEMAKE = Path(sys.executable).parent / "snakemake"
+REPORTS = Path("reports") / f"v{abglib.__version__}"
+OLD_REPORT = "<html>an older version's report</html>"
+
+
+def _snakemake(workdir: Path, *args: str) -> subprocess.CompletedProcess:
+    exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
+    cmd = [
+        exe,
+        "-s",
+        str(REPO / "Snakefile"),
+        "-d",
+        str(workdir),
+        "--configfile",
+        str(SMALL),
+        *args,
+    ]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+
+
+@pytest.fixture(scope="module")
+def two_runs(tmp_path_factory):
+    dirs = []
+    for name in ("run1", "run2"):
+        d = tmp_path_factory.mktemp(name)
+        # an older version's report, which building this version must not touch
+        old = d / "reports" / "v0.0.0" / "steelman1978" / "index.html"
+        old.parent.mkdir(parents=True)
+        old.write_text(OLD_REPORT, encoding="utf-8")
+        out = _snakemake(d, "-c2")
+        assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+        dirs.append(d)
+    return dirs
+
+
+def test_outputs_exist(two_runs):
+    d = two_runs[0]
+    for rel in [
+        "results/scorecard.csv",
+        "results/steelman1978/comparison.csv",
+        REPORTS / "index.html",
+        REPORTS / "scorecard.csv",
+        REPORTS / "steelman1978" / "index.html",
+        REPORTS / "steelman1978" / "tables" / "comparison.csv",
+        *(REPORTS / "steelman1978" / "figures" / f"fig{i}.png" for i in range(1, 7)),
+    ]:
+        assert (d / rel).is_file(), rel
+    assert (d / "logs").is_dir()
+
+
+def test_older_version_untouched(two_runs):
+    old = two_runs[0] / "reports" / "v0.0.0"
+    assert sorted(p.name for p in old.rglob("*") if p.is_file()) == ["index.html"]
+    assert (old / "steelman1978" / "index.html").read_text(encoding="utf-8") == OLD_REPORT
+
+
+def test_comparison_contract_and_scorecard(two_runs):
+    d = two_runs[0]
+    comp = pd.read_csv(d / "results/steelman1978/comparison.csv", dtype=str, keep_default_na=False)
+    assert list(comp.columns) == COMPARISON_COLUMNS
+    assert set(comp["verdict"]) <= set(VERDICTS)
+    assert (comp.loc[comp["verdict"] != "match", "note"].str.len() > 0).all()
+    card = pd.read_csv(d / "results/scorecard.csv")
+    assert list(card.columns) == SCORECARD_COLUMNS
+    row = card.set_index("doc").loc["steelman1978"]
+    assert sum(int(row[v]) for v in VERDICTS) == int(row["total"]) == len(comp)
+
+
+def test_report_is_self_contained_and_relocatable(two_runs):
+    html = (two_runs[0] / REPORTS / "steelman1978" / "index.html").read_text(encoding="utf-8")
+    assert "data:image/png;base64," in html
+    assert str(two_runs[0]) not in html and str(REPO) not in html
+    assert "config sha256" in html
+
+
+def test_two_clean_runs_give_identical_csv_tables(two_runs):
+    a, b = two_runs
+    files = sorted(
+        p.relative_to(a)
+        for p in a.rglob("*.csv")
+        if ".snakemake" not in p.parts and "benchmarks" not in p.parts
+    )
+    assert len(files) > 10
+    different = [str(f) for f in files if (a / f).read_bytes() != (b / f).read_bytes()]
+    assert different == []
+
+
+def test_second_run_schedules_nothing(two_runs):
+    out = _snakemake(two_runs[0], "-n")
+    assert out.returncode == 0
+    assert "Nothing to be done" in out.stdout + out.stderr

@@ -1,0 +1,85 @@
+# Shared by every rule: config validation, the report version, paths and input functions.
+
+from pathlib import Path
+
+import abglib
+from abglib.pipeline import config_errors, prepend_pythonpath
+from snakemake.exceptions import WorkflowError
+from snakemake.utils import min_version, validate
+
+min_version("8.0")
+
+CONFIG_SCHEMA = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
+
+try:
+    validate(config, schema=str(CONFIG_SCHEMA))
+except WorkflowError:
+    raise WorkflowError(
+        "the config does not match workflow/schemas/config.schema.yaml:\n  "
+        + "\n  ".join(config_errors(config, CONFIG_SCHEMA))
+    ) from None
+
+# every job imports abglib from this repository, whatever environment runs it (--sdm conda)
+prepend_pythonpath(workflow.basedir)
+
+# the report version is the package version (CONTRACTS.md §4), never a config value
+VERSION = abglib.__version__
+REPORTS = f"reports/v{VERSION}"
+DOCS = config["docs"]
+
+# titles of the source documents (shared/seeds/README.md), for the index page
+DOC_TITLES = {
+    "steelman1978": "J. E. Steelman, Frequency Response of α-β-γ Trackers (WSMR, 1978)",
+    "alwagih": "Al-Wagih and Abdulla, A Study of αβ Tracker ...",
+    "huang": "Huang, Yang and Ma, Research on Fixed-gain Range Tracking Loop",
+    "faa_bendix": "Elwell (FAA), Bendix Alpha-Beta Tracking Filter Test",
+    "antenna": "LQ preview control and Kalman estimation for a radar tracking antenna",
+}
+
+# published numbers are part of the repository, found from the Snakefile's folder so that
+# the pipeline can run in any working directory (snakemake -d)
+REPO = workflow.basedir
+PUBLISHED = Path(workflow.basedir) / "data" / "published"
+NOTEBOOKS = Path(workflow.basedir) / "workflow" / "notebooks"
+
+# per document: figure stems and table stems a report shows and copies beside itself
+REPORT_CONTENT = {
+    "steelman1978": {
+        "figures": sorted(config["steelman1978"]["figures"]),
+        "tables": [
+            "comparison",
+            "gains",
+            "design_example",
+            "tables345",
+            "equations",
+            "stability",
+        ],
+    },
+}
+
+
+def published_tables(wildcards):
+    """Transcription files of one document (data/published/<doc>/*.csv)."""
+    files = sorted((PUBLISHED / wildcards.doc).glob("*.csv"))
+    if not files:
+        raise WorkflowError(f"no published tables in {PUBLISHED / wildcards.doc}")
+    return [str(f) for f in files]
+
+
+def report_figures(doc):
+    return [f"results/{doc}/figures/{f}.png" for f in REPORT_CONTENT[doc]["figures"]]
+
+
+def report_tables(doc):
+    return [f"results/{doc}/{t}.csv" for t in REPORT_CONTENT[doc]["tables"]]
+
+
+def all_targets():
+    targets = [
+        "results/scorecard.csv",
+        f"{REPORTS}/index.html",
+        f"{REPORTS}/scorecard.csv",
+    ]
+    for doc in DOCS:
+        targets.append(f"{REPORTS}/{doc}/index.html")
+    return targets

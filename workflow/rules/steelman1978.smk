@@ -1,0 +1,144 @@
+# Seed 000: J. E. Steelman, Frequency Response of α-β-γ Trackers (1978).
+# Figures 1-6, Tables 1-5, the design example, the equations' table of agreement.
+
+S78 = config["steelman1978"]
+
+
+wildcard_constraints:
+    fig="fig[1-6]",
+
+
+rule steelman_frequency_response:
+    output:
+        data="results/steelman1978/freqresp/{fig}.csv",
+    log:
+        "logs/steelman1978/frequency_response_{fig}.log",
+    benchmark:
+        "benchmarks/results/steelman1978/frequency_response_{fig}.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        figure=lambda wildcards: S78["figures"][wildcards.fig],
+        grids=S78["grids"],
+        digits=config["significant_digits"],
+    script:
+        "../scripts/frequency_response.py"
+
+
+rule steelman_figure:
+    input:
+        data="results/steelman1978/freqresp/{fig}.csv",
+    output:
+        png=report(
+            "results/steelman1978/figures/{fig}.png",
+            category="Steelman 1978",
+            subcategory="Figures",
+            labels={"figure": "{fig}"},
+        ),
+    log:
+        "logs/steelman1978/figure_{fig}.log",
+    benchmark:
+        "benchmarks/results/steelman1978/figure_{fig}.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        axes=lambda wildcards: S78["figures"][wildcards.fig]["axes"],
+        caption=lambda wildcards: S78["figures"][wildcards.fig]["caption"],
+        dpi=config["figure_dpi"],
+    script:
+        "../scripts/plot_frequency_response.py"
+
+
+rule steelman_equations:
+    output:
+        equations=report(
+            "results/steelman1978/equations.csv",
+            category="Steelman 1978",
+            subcategory="Tables",
+            labels={"table": "equations"},
+        ),
+        stability=report(
+            "results/steelman1978/stability.csv",
+            category="Steelman 1978",
+            subcategory="Tables",
+            labels={"table": "stability"},
+        ),
+    log:
+        "logs/steelman1978/equations.log",
+    benchmark:
+        "benchmarks/results/steelman1978/equations.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        checks=S78["equation_checks"],
+        eq53_exponents=[S78["eq53_exponent_3db"], S78["eq53_exponent_6db"]],
+        digits=config["significant_digits"],
+    script:
+        "../scripts/steelman_equations.py"
+
+
+rule steelman_reproduce:
+    input:
+        stability="results/steelman1978/stability.csv",
+    output:
+        reproduced="results/steelman1978/reproduced.csv",
+        alternatives="results/steelman1978/alternatives.csv",
+        gains=report(
+            "results/steelman1978/gains.csv",
+            category="Steelman 1978",
+            subcategory="Tables",
+            labels={"table": "gains"},
+        ),
+        design_example=report(
+            "results/steelman1978/design_example.csv",
+            category="Steelman 1978",
+            subcategory="Tables",
+            labels={"table": "design example"},
+        ),
+        tables345=report(
+            "results/steelman1978/tables345.csv",
+            category="Steelman 1978",
+            subcategory="Tables",
+            labels={"table": "tables 3-5"},
+        ),
+    log:
+        "logs/steelman1978/reproduce.log",
+    benchmark:
+        "benchmarks/results/steelman1978/reproduce.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        cfg=S78,
+        digits=config["significant_digits"],
+    script:
+        "../scripts/steelman_reproduce.py"
+
+
+rule steelman_report:
+    input:
+        notebook=str(NOTEBOOKS / "steelman1978.py"),
+        figures=report_figures("steelman1978"),
+        tables=report_tables("steelman1978"),
+    output:
+        html=f"{REPORTS}/steelman1978/index.html",
+        figures=expand(
+            f"{REPORTS}/steelman1978/figures/{{f}}.png",
+            f=REPORT_CONTENT["steelman1978"]["figures"],
+        ),
+        tables=expand(
+            f"{REPORTS}/steelman1978/tables/{{t}}.csv",
+            t=REPORT_CONTENT["steelman1978"]["tables"],
+        ),
+    log:
+        "logs/reports/steelman1978.log",
+    benchmark:
+        "benchmarks/results/reports/steelman1978.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        doc="steelman1978",
+        version=VERSION,
+        repo=lambda wildcards, input: REPO,
+        timeout=config["notebook_timeout"],
+    script:
+        "../scripts/render_report.py"

@@ -1,0 +1,18 @@
+"""Draw one frequency-response figure of seed 000 (Figs. 1-6) from its response table."""
+
+import pandas as pd
+
+from abglib.pipeline import log_to
+
+
+def main(input, output, params) -> None:
+    from abglib.plotting import frequency_response_figure, save_figure
+
+    data = pd.read_csv(input.data)
+    fig = frequency_response_figure(data, params.axes, params.caption)
+    save_figure(fig, output.png, dpi=params.dpi)
+
+
+if "snakemake" in globals():
+    log_to(snakemake.log[0])  # noqa: F821
+    main(snakemake.input, snakemake.output, snakemake.params)  # noqa: F821

@@ -1,0 +1,53 @@
+"""Execute a document's report notebook into ``reports/v<version>/<doc>/index.html``.
+
+The notebook gets the pipeline's parameters (relative paths of what upstream rules
+computed, and the provenance record); the figures and tables it shows are copied beside
+the HTML (CONTRACTS.md §4).
+"""
+
+import os
+import shutil
+from pathlib import Path
+
+from abglib.pipeline import atomic_output, log_to
+
+
+def copy_atomic(src, dst) -> None:
+    """Copy ``src`` to ``dst`` through a temporary file (no half-written copy on failure)."""
+    with atomic_output(dst) as tmp:
+        shutil.copyfile(src, tmp)
+
+
+def main(input, output, params, config, logger) -> None:
+    from abglib import provenance
+    from abglib.report import render_notebook
+
+    figures = {Path(p).stem: str(p) for p in input.figures}
+    tables = {Path(p).stem: str(p) for p in input.tables}
+    parameters = {
+        "doc": params.doc,
+        "version": params.version,
+        "figures": figures,
+        "tables": tables,
+        "provenance": provenance.collect(config, repo=params.repo),
+    }
+    render_notebook(
+        input.notebook,
+        output.html,
+        parameters,
+        cwd=os.getcwd(),
+        name=params.doc,
+        timeout=params.timeout,
+        log=logger.info,
+    )
+    for src, dst in zip(
+        list(input.figures) + list(input.tables),
+        list(output.figures) + list(output.tables),
+        strict=True,
+    ):
+        copy_atomic(src, dst)
+
+
+if "snakemake" in globals():
+    _logger = log_to(snakemake.log[0])  # noqa: F821
+    main(snakemake.input, snakemake.output, snakemake.params, snakemake.config, _logger)  # noqa: F821
