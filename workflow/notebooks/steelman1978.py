@@ -58,9 +58,12 @@ def verdicts(prefix):
 # **What this report establishes.** The α-β-γ recursion of eqs 1–6, its transfer functions
 # (eqs 36–39) and hence every frequency-response figure are reproduced exactly: the
 # transfer functions agree with the DFT of the impulse response of the simulated tracker to
-# rounding error (section 5). The gains of Tables 1 and 2, the exact overshoots of Table 4 and
-# the exact peak frequencies of Table 5 are the standard (critically damped) and QD designs
-# as the text defines them.
+# rounding error (section 5). The gains of Tables 1 and 2 and the exact overshoots of Table 4
+# are the standard (critically damped) and QD designs as the text defines them (the QD
+# column was computed from the unrounded m = 16.563, not the printed 16.6). Table 5's exact
+# peak frequency holds at α = .1; at α = .3 the printed 0.13325 misses the exact 0.1332450
+# by 3.5e-8 more than half a unit of its last digit — agreement to five significant digits,
+# but we do not rescue it by guessing how the author rounded, so it stays a mismatch.
 #
 # **What holds.** Simpson's variance and transient measures (eqs 11–20) are exact for the
 # smoothed outputs; eqs 22–24 put all three poles at z = θ (critically damped); eqs 50 and
@@ -74,7 +77,8 @@ def verdicts(prefix):
 # are right arithmetic on the printed inputs (section 3). The approximations 53–55 are only
 # approximations: Tables 3–5 show by how much. The "exact" −6 dB frequencies of Table 3, two
 # of the eq 55 overshoots of Table 4 and both α = .488 entries of Table 5 are not reproduced
-# by any reading we tried (section 4). The phase of X_p/X is not monotone as the text says:
+# by any reading we tried (section 4); the printed "exact" −6 dB values sit 2 % low in ωT
+# (at −5.85 to −5.94 dB), consistent with readings off the lost Fig. 2. The phase of X_p/X is not monotone as the text says:
 # it first rises a little (a phase lead of the predictor at low ωT) before it falls
 # (Fig. 3; the claim's row below gives the size).
 #

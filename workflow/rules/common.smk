@@ -55,6 +55,18 @@ REPORT_CONTENT = {
             "stability",
         ],
     },
+    "faa_bendix": {
+        "figures": ["impulse", "ramp", "triangle"],
+        "tables": [
+            "comparison",
+            "gains",
+            "memo_table",
+            "rounding",
+            "row7",
+            "damping_lags",
+            "responses",
+        ],
+    },
 }
 
 

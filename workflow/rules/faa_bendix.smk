@@ -1,0 +1,127 @@
+# Seed 003: W. Elwell (FAA Technical Center), Bendix Alpha-Beta Tracking Filter Test, and
+# A. I. Sinsky's memo on the expected smoothing. Impulse and ramp responses of the eight
+# gain sets, the memo's table, damping and lags.
+
+FB = config.get("faa_bendix", {})
+if "faa_bendix" in DOCS and not FB:
+    raise WorkflowError("config lists faa_bendix in docs but has no faa_bendix section")
+
+
+rule faa_bendix_reproduce:
+    input:
+        published=sorted(str(f) for f in (PUBLISHED / "faa_bendix").glob("*.csv")),
+    output:
+        reproduced="results/faa_bendix/reproduced.csv",
+        alternatives="results/faa_bendix/alternatives.csv",
+        responses=report(
+            "results/faa_bendix/responses.csv",
+            category="FAA Bendix",
+            subcategory="Tables",
+            labels={"table": "responses"},
+        ),
+        gains=report(
+            "results/faa_bendix/gains.csv",
+            category="FAA Bendix",
+            subcategory="Tables",
+            labels={"table": "gains"},
+        ),
+        memo_table=report(
+            "results/faa_bendix/memo_table.csv",
+            category="FAA Bendix",
+            subcategory="Tables",
+            labels={"table": "memo table"},
+        ),
+        rounding=report(
+            "results/faa_bendix/rounding.csv",
+            category="FAA Bendix",
+            subcategory="Tables",
+            labels={"table": "rounding"},
+        ),
+        row7=report(
+            "results/faa_bendix/row7.csv",
+            category="FAA Bendix",
+            subcategory="Tables",
+            labels={"table": "row 7"},
+        ),
+        damping_lags=report(
+            "results/faa_bendix/damping_lags.csv",
+            category="FAA Bendix",
+            subcategory="Tables",
+            labels={"table": "damping and lags"},
+        ),
+    log:
+        "logs/faa_bendix/reproduce.log",
+    benchmark:
+        "benchmarks/results/faa_bendix/reproduce.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        cfg=FB,
+        digits=config["significant_digits"],
+    script:
+        "../scripts/faa_bendix.py"
+
+
+rule faa_bendix_figures:
+    input:
+        responses="results/faa_bendix/responses.csv",
+        damping_lags="results/faa_bendix/damping_lags.csv",
+    output:
+        impulse=report(
+            "results/faa_bendix/figures/impulse.png",
+            category="FAA Bendix",
+            subcategory="Figures",
+            labels={"figure": "impulse"},
+        ),
+        ramp=report(
+            "results/faa_bendix/figures/ramp.png",
+            category="FAA Bendix",
+            subcategory="Figures",
+            labels={"figure": "ramp"},
+        ),
+        triangle=report(
+            "results/faa_bendix/figures/triangle.png",
+            category="FAA Bendix",
+            subcategory="Figures",
+            labels={"figure": "stability triangle"},
+        ),
+    log:
+        "logs/faa_bendix/figures.log",
+    benchmark:
+        "benchmarks/results/faa_bendix/figures.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        dpi=config["figure_dpi"],
+    script:
+        "../scripts/faa_bendix_figures.py"
+
+
+rule faa_bendix_report:
+    input:
+        notebook=str(NOTEBOOKS / "faa_bendix.py"),
+        figures=report_figures("faa_bendix"),
+        tables=report_tables("faa_bendix"),
+    output:
+        html=f"{REPORTS}/faa_bendix/index.html",
+        figures=expand(
+            f"{REPORTS}/faa_bendix/figures/{{f}}.png",
+            f=REPORT_CONTENT["faa_bendix"]["figures"],
+        ),
+        tables=expand(
+            f"{REPORTS}/faa_bendix/tables/{{t}}.csv",
+            t=REPORT_CONTENT["faa_bendix"]["tables"],
+        ),
+    log:
+        "logs/reports/faa_bendix.log",
+    benchmark:
+        "benchmarks/results/reports/faa_bendix.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        doc="faa_bendix",
+        version=VERSION,
+        repo=workflow.basedir,
+        timeout=config["notebook_timeout"],
+    script:
+        "../scripts/render_report.py"
