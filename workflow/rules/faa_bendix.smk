@@ -121,7 +121,7 @@ rule faa_bendix_report:
     params:
         doc="faa_bendix",
         version=VERSION,
-        repo=workflow.basedir,
+        repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
     script:
         "../scripts/render_report.py"
