@@ -150,7 +150,9 @@ def test_peak_two_routes_and_brute_force(gains, output):
     assert ov_poly == pytest.approx(ov_grid, rel=1e-8, abs=1e-12)
     # a flat maximum fixes its location only to ~sqrt(eps) from function values (grid route)
     assert w_poly == pytest.approx(w_grid, rel=1e-6, abs=1e-7)
-    assert mag(gains, DENSE, output).max() <= 1 + ov_poly + 1e-12
+    # no grid point beats the exact peak, up to rounding relative to the peak's size
+    # (resonant gains reach |H| ~ 20: an absolute 1e-12 was below float resolution there)
+    assert mag(gains, DENSE, output).max() <= (1 + ov_poly) * (1 + 1e-12)
     assert mag(gains, w_poly, output) == pytest.approx(1 + ov_poly, rel=1e-9)
 
 
@@ -263,3 +265,18 @@ UNSTABLE = Gains(0.1, 0.01, 0.2)  # fails eq 47: 0.001 + 0.01 - 0.2 < 0
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+@pytest.mark.parametrize(
+    "gains",
+    [Gains(1.9, 0.05, 0.001), Gains(0.05, 0.9, 0.02)],  # stable, peaks |H| = 25.0 and 36.8
+)
+def test_peak_bound_is_relative_for_strongly_resonant_gains(gains):
+    # pinned after a CI hypothesis run: for resonant stable gains (peak |H| ~ 20-40) an
+    # absolute 1e-12 slack on the grid bound was below float resolution
+    assert is_stable(gains)
+    w, ov = peak(gains, "x_smooth")
+    assert ov > 20
+    dense = mag(gains, DENSE, "x_smooth")
+    assert dense.max() <= (1 + ov) * (1 + 1e-12)
+    assert dense.max() >= (1 + ov) * (1 - 1e-3)  # and the dense grid does come close
