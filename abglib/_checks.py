@@ -103,6 +103,13 @@ def check_in_range(
     return arr
 
 
-def scalar_or_array(arr: np.ndarray):
-    """Return a Python float for 0-d input, else the array (scipy's scalar-in, scalar-out)."""
-    return float(arr) if np.ndim(arr) == 0 else arr
+def scalar_or_array(arr):
+    """A Python scalar (bool for boolean, else float) for 0-d input, else the array.
+
+    scipy's scalar-in, scalar-out convention, shared by every function that accepts a
+    scalar gain set or a bank.
+    """
+    arr = np.asarray(arr)
+    if arr.ndim:
+        return arr
+    return bool(arr) if arr.dtype == bool else float(arr)

@@ -19,16 +19,10 @@ Alpha and beta mean the same thing in all three conventions.
 
 from __future__ import annotations
 
-from ._checks import AbglibValueError, check_finite, scalar_or_array
-from .gains import Gains
+from ._checks import check_finite, scalar_or_array
+from .gains import Gains, require_gains
 
 __all__ = ["from_filterpy", "from_huang", "to_filterpy", "to_huang"]
-
-
-def _require_gains(gains) -> Gains:
-    if not isinstance(gains, Gains):
-        raise AbglibValueError(f"gains must be an abglib.Gains, got {type(gains).__name__}")
-    return gains
 
 
 def _half(value):
@@ -60,7 +54,7 @@ def to_huang(gains: Gains) -> tuple:
     >>> to_huang(Gains(0.5, 0.2, 0.04))
     (0.5, 0.2, 0.02)
     """
-    g = _require_gains(gains)
+    g = require_gains(gains)
     return g.alpha, g.beta, _half(g.gamma)
 
 
@@ -116,7 +110,7 @@ def to_filterpy(gains: Gains) -> tuple:
     >>> to_filterpy(Gains(0.5, 0.2, 0.04))
     (0.5, 0.2, 0.02)
     """
-    g = _require_gains(gains)
+    g = require_gains(gains)
     return g.alpha, g.beta, _half(g.gamma)
 
 

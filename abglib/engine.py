@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import AbglibValueError, as_float_array, check_positive, describe
-from .gains import Gains
+from .gains import Gains, require_gains
 
 __all__ = ["INIT_MODES", "OUTPUTS", "TrackResult", "track"]
 
@@ -276,8 +276,7 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None, outputs=OUTPUTS) 
     >>> out.x_smooth
     array([0., 1., 2., 3., 4.])
     """
-    if not isinstance(gains, Gains):
-        raise AbglibValueError(f"gains must be an abglib.Gains, got {type(gains).__name__}")
+    require_gains(gains)
     if isinstance(outputs, str):
         outputs = (outputs,)
     unknown = [o for o in outputs if o not in OUTPUTS]

@@ -19,7 +19,7 @@ import numpy as np
 
 from ._checks import AbglibValueError, check_finite
 
-__all__ = ["Gains"]
+__all__ = ["Gains", "require_gains"]
 
 
 def _frozen(name: str, value):
@@ -121,3 +121,10 @@ class Gains:
         return all(
             np.allclose(x, y, rtol=rtol, atol=atol) for x, y in zip(self, other, strict=True)
         )
+
+
+def require_gains(gains, name: str = "gains") -> Gains:
+    """Return ``gains`` if it is a :class:`Gains`, else raise naming what was passed."""
+    if not isinstance(gains, Gains):
+        raise AbglibValueError(f"{name} must be an abglib.Gains, got {type(gains).__name__}")
+    return gains

@@ -24,11 +24,11 @@ from __future__ import annotations
 import numpy as np
 import scipy.integrate
 
-from .._checks import AbglibValueError, check_finite, check_positive
+from .._checks import AbglibValueError, check_finite, check_positive, scalar_or_array
 from ..conventions import from_huang
 from ..engine import track
 from ..gains import Gains
-from ._variance import _broadcast, _check_stable, _out, _pole_radius, vrf
+from ._variance import _broadcast, _check_stable, _pole_radius, vrf
 
 __all__ = ["enbw", "enbw_huang_eq8_13", "enbw_huang_eq14", "enbw_numeric"]
 
@@ -65,7 +65,7 @@ def enbw(gains: Gains, dt=1.0):
     """
     a, b, g, T = _broadcast(gains, dt)
     _check_stable(a, b, g, _UNSTABLE)
-    return _out(np.asarray(vrf(Gains(a, b, g), T)["x_pred"]) / (2.0 * T))
+    return scalar_or_array(np.asarray(vrf(Gains(a, b, g), T)["x_pred"]) / (2.0 * T))
 
 
 # --------------------------------------------------------------------------- numeric
@@ -140,7 +140,7 @@ def enbw_numeric(gains: Gains, dt=1.0, method="integral"):
     out = np.empty(a.shape)
     for idx in np.ndindex(a.shape):
         out[idx] = one(float(a[idx]), float(b[idx]), float(g[idx])) / (2.0 * float(T[idx]))
-    return _out(out)
+    return scalar_or_array(out)
 
 
 # --------------------------------------------------------------------------- printed
@@ -178,7 +178,9 @@ def enbw_huang_eq14(alpha, beta, dt):
     b = check_finite("beta", beta)
     T = check_positive("dt", dt)
     _huang_stable(a, b, 0.0)
-    return _out((2.0 * b + a * b + 2.0 * a * a) / (2.0 * T * (4.0 * a - 2.0 * a * a - a * b)))
+    return scalar_or_array(
+        (2.0 * b + a * b + 2.0 * a * a) / (2.0 * T * (4.0 * a - 2.0 * a * a - a * b))
+    )
 
 
 def _huang_k(a, b, g):
@@ -315,4 +317,4 @@ def enbw_huang_eq8_13(alpha_h, beta_h, gamma_h, dt, method="eq13"):
     for idx in np.ndindex(ah.shape):
         a, b, g = float(ah[idx]), float(bh[idx]), float(gh[idx])
         out[idx] = one(a, b, g) / (2.0 * float(T[idx]) * (4.0 - 2.0 * a - b) ** 2)
-    return _out(out)
+    return scalar_or_array(out)

@@ -21,10 +21,10 @@ import numpy as np
 from numpy.polynomial import Polynomial
 from scipy.optimize import brentq, minimize_scalar
 
-from .._checks import AbglibValueError, check_finite, check_in_range, describe
-from ..gains import Gains
+from .._checks import AbglibValueError, check_finite, check_in_range, describe, scalar_or_array
+from ..gains import Gains, require_gains
 from ._stability import is_stable
-from ._transfer import _check_gains, _check_output, _w_forms, frequency_response
+from ._transfer import _check_output, _w_forms, frequency_response
 
 __all__ = [
     "POSITION_OUTPUTS",
@@ -51,9 +51,6 @@ _GRID = np.union1d(np.linspace(0.0, np.pi, 8193), np.geomspace(1e-7, np.pi, 4097
 
 
 # --------------------------------------------------------------------------- helpers
-def _out(arr):
-    arr = np.asarray(arr, dtype=float)
-    return float(arr) if arr.ndim == 0 else arr
 
 
 def _check_method(method):
@@ -199,7 +196,7 @@ def min_gain_at_pi(gains: Gains, output: str = "x_smooth"):
     (for :math:`\\alpha > 1` it exceeds 1 and is a maximum); the tests check where.
     """
     _check_output(output, POSITION_OUTPUTS)
-    return _out(np.abs(frequency_response(gains, output, np.pi)))
+    return scalar_or_array(np.abs(frequency_response(gains, output, np.pi)))
 
 
 def peak(gains: Gains, output: str = "x_smooth", method: str = "poly"):
@@ -229,7 +226,7 @@ def peak(gains: Gains, output: str = "x_smooth", method: str = "poly"):
     exceeds 1 exactly for :math:`q < 2\\beta` and the peak lies below eq 51's frequency.
     Compare the approximations :func:`omega_max_eq54` and :func:`overshoot_eq55`.
     """
-    gains = _check_gains(gains)
+    gains = require_gains(gains)
     _check_output(output, POSITION_OUTPUTS)
     _check_method(method)
     _require_stable(gains)
@@ -259,7 +256,7 @@ def omega_at_gain(gains: Gains, level_db, output: str = "x_smooth", method: str 
         :math:`|H| = 10^{L_{dB}/20}`; ``nan`` where the response does not reach the level
         above the peak (a level above the peak, or below the value at :math:`\\pi`).
     """
-    gains = _check_gains(gains)
+    gains = require_gains(gains)
     _check_output(output, POSITION_OUTPUTS)
     _check_method(method)
     level = check_finite("level_db", level_db)
@@ -268,7 +265,7 @@ def omega_at_gain(gains: Gains, level_db, output: str = "x_smooth", method: str 
     _require_stable(gains)
     lin = 10.0 ** (float(level) / 20.0)
     (w,) = _each(gains, lambda g: _omega_at_gain_scalar(g, lin, output, method))
-    return _out(w)
+    return scalar_or_array(w)
 
 
 def first_undesired_max(gains: Gains, output: str = "x_smooth", method: str = "poly"):
@@ -294,7 +291,7 @@ def first_undesired_max(gains: Gains, output: str = "x_smooth", method: str = "p
     (":math:`\\omega = (2\\pi - .04)/T`" for :math:`\\alpha = .1`).
     """
     w, _ = peak(gains, output, method)
-    return _out(2.0 * np.pi - np.asarray(w))
+    return scalar_or_array(2.0 * np.pi - np.asarray(w))
 
 
 # --------------------------------------------------------------------------- printed
@@ -313,17 +310,17 @@ def min_gain_steelman_eq50(gains: Gains):
         negative when :math:`\\beta > 2\\alpha`); compare its modulus with
         :func:`min_gain_at_pi`.
     """
-    a, b, _ = _check_gains(gains).as_arrays()
+    a, b, _ = require_gains(gains).as_arrays()
     den = 4.0 - 2.0 * a - b
     if np.any(den == 0.0):
         raise AbglibValueError(
             f"eq 50 needs 4 - 2 alpha - beta != 0 (the stability boundary), got {describe(den)}"
         )
-    return _out((2.0 * a - b) / den)
+    return scalar_or_array((2.0 * a - b) / den)
 
 
 def _beta(gains, low=0.0, high=None, **kw):
-    _, b, _ = _check_gains(gains).as_arrays()
+    _, b, _ = require_gains(gains).as_arrays()
     return check_in_range("beta", b, low, high, **kw)
 
 
@@ -348,7 +345,7 @@ def omega_unity_eq51(gains: Gains):
     1 - \\beta`. (For :math:`\\alpha = 1`, :math:`\\bar X \\equiv X`.)
     """
     b = _beta(gains, 0.0, 2.0, low_inclusive=True, high_inclusive=True)
-    return _out(np.arccos(1.0 - b))
+    return scalar_or_array(np.arccos(1.0 - b))
 
 
 def omega_unity_eq52(gains: Gains):
@@ -363,7 +360,7 @@ def omega_unity_eq52(gains: Gains):
     -------
     float or array (S...)
     """
-    return _out(np.sqrt(2.0 * _beta(gains, 0.0, low_inclusive=True)))
+    return scalar_or_array(np.sqrt(2.0 * _beta(gains, 0.0, low_inclusive=True)))
 
 
 def omega_3db_eq53(gains: Gains, exponent: float = -0.15):
@@ -391,12 +388,12 @@ def omega_3db_eq53(gains: Gains, exponent: float = -0.15):
     the line from (:math:`\\sqrt{2\\beta}`, 0 dB) to (:math:`\\pi`,
     :math:`20\\log_{10}(\\alpha/2)` dB, eq 50 for small :math:`\\beta`) on log-log axes.
     """
-    a, _, _ = _check_gains(gains).as_arrays()
+    a, _, _ = require_gains(gains).as_arrays()
     a = check_in_range("alpha", a, 0.0, 2.0)
     b = _beta(gains, 0.0)
     e = check_finite("exponent", exponent)
     w1 = np.sqrt(2.0 * b)
-    return _out(w1 * 10.0 ** (e * np.log(np.pi / w1) / np.log(a / 2.0)))
+    return scalar_or_array(w1 * 10.0 ** (e * np.log(np.pi / w1) / np.log(a / 2.0)))
 
 
 def omega_max_eq54(gains: Gains):
@@ -412,7 +409,7 @@ def omega_max_eq54(gains: Gains):
     float or array (S...)
         Half of eq 52's unity-gain frequency.
     """
-    return _out(np.sqrt(_beta(gains, 0.0, low_inclusive=True) / 2.0))
+    return scalar_or_array(np.sqrt(_beta(gains, 0.0, low_inclusive=True) / 2.0))
 
 
 def overshoot_eq55_terms(gains: Gains) -> dict:
@@ -435,12 +432,17 @@ def overshoot_eq55_terms(gains: Gains) -> dict:
     :math:`M = \\tfrac38\\beta^2(1-\\alpha)(n + \\beta/3)`,
     :math:`N^2 = \\beta^3(1-\\alpha)^2 n^2/16`, :math:`D = n^2 + \\beta^3/8`.
     """
-    a, b, g = _check_gains(gains).as_arrays()
+    a, b, g = require_gains(gains).as_arrays()
     n = a * b / 2.0 - g + 3.0 / 8.0 * b**2
     M = 3.0 / 8.0 * b**2 * (1.0 - a) * (n + b / 3.0)
     N2 = b**3 * (1.0 - a) ** 2 * n**2 / 16.0
     D = n**2 + b**3 / 8.0
-    return {"n": _out(n), "M": _out(M), "N2": _out(N2), "D": _out(D)}
+    return {
+        "n": scalar_or_array(n),
+        "M": scalar_or_array(M),
+        "N2": scalar_or_array(N2),
+        "D": scalar_or_array(D),
+    }
 
 
 def overshoot_eq55(gains: Gains):
@@ -466,4 +468,4 @@ def overshoot_eq55(gains: Gains):
     M, N2, D = (np.asarray(t[k]) for k in ("M", "N2", "D"))
     if np.any(D == 0.0):
         raise AbglibValueError(f"eq 55 needs D != 0 (eq 58), got {describe(D)}")
-    return _out(M / D + (M**2 + N2) / (2.0 * D**2))
+    return scalar_or_array(M / D + (M**2 + N2) / (2.0 * D**2))

@@ -14,9 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._checks import check_finite
-from ..gains import Gains
-from ._transfer import _check_gains
+from .._checks import check_finite, scalar_or_array
+from ..gains import Gains, require_gains
 
 __all__ = [
     "characteristic_polynomial",
@@ -29,14 +28,6 @@ __all__ = [
     "stable_jury_steelman",
     "stable_sufficient_eq49",
 ]
-
-
-def _out(arr):
-    """Python scalar for 0-d results, the array otherwise."""
-    arr = np.asarray(arr)
-    if arr.ndim:
-        return arr
-    return bool(arr) if arr.dtype == bool else arr.item()
 
 
 def characteristic_polynomial(gains: Gains):
@@ -61,7 +52,7 @@ def characteristic_polynomial(gains: Gains):
     - (1 - \\alpha)`; eq 41 (:math:`\\gamma = 0`):
     :math:`z^2 + (\\alpha + \\beta - 2) z + (1 - \\alpha)`.
     """
-    a, b, g = _check_gains(gains).as_arrays()
+    a, b, g = require_gains(gains).as_arrays()
     cubic = np.stack(
         [np.ones_like(a), a + b + g / 2 - 3.0, 3.0 - 2.0 * a - b + g / 2, a - 1.0], axis=-1
     )
@@ -124,7 +115,7 @@ def pole_radius(gains: Gains):
     float or array (S...)
         ``max_k |z_k|`` over the poles of :func:`poles` (eq 41's two where ``gamma == 0``).
     """
-    return _out(np.nanmax(np.abs(poles(gains)), axis=-1))
+    return scalar_or_array(np.nanmax(np.abs(poles(gains)), axis=-1))
 
 
 def _jury(gains: Gains):
@@ -174,7 +165,7 @@ def is_stable(gains: Gains):
     (a pole exactly on the circle) are unstable. The tests check this against the
     modulus of the numeric poles and against the state-space matrix ``F``.
     """
-    return _out(_jury(_check_gains(gains)))
+    return scalar_or_array(_jury(require_gains(gains)))
 
 
 def stable_jury_steelman(gains: Gains):
@@ -199,10 +190,10 @@ def stable_jury_steelman(gains: Gains):
     paper omits; it is implied by eqs 45, 46 and 48, so the printed set is necessary and
     sufficient, as the paper says (the tests confirm it against the poles).
     """
-    a, b, g = _check_gains(gains).as_arrays()
+    a, b, g = require_gains(gains).as_arrays()
     ab = (a > 0) & (b > 0) & (2 * a + b < 4)
     abg = (0 < a) & (a < 2) & (2 * a + b < 4) & (a * b + a * g / 2 - g > 0) & (g > 0)
-    return _out(np.where(g == 0.0, ab, abg))
+    return scalar_or_array(np.where(g == 0.0, ab, abg))
 
 
 def stable_sufficient_eq49(gains: Gains):
@@ -223,8 +214,8 @@ def stable_sufficient_eq49(gains: Gains):
     :math:`\\alpha\\beta > \\gamma` (seed 000, eq 49, "sufficient but not necessary").
     As printed, eq 48 (:math:`\\gamma > 0`) makes it False for every alpha-beta tracker.
     """
-    a, b, g = _check_gains(gains).as_arrays()
-    return _out((0 < a) & (a < 2) & (2 * a + b < 4) & (a * b > g) & (g > 0))
+    a, b, g = require_gains(gains).as_arrays()
+    return scalar_or_array((0 < a) & (a < 2) & (2 * a + b < 4) & (a * b > g) & (g > 0))
 
 
 def stable_huang_eq5(alpha_h, beta_h, gamma_h):
@@ -251,7 +242,7 @@ def stable_huang_eq5(alpha_h, beta_h, gamma_h):
     a = check_finite("alpha_h", alpha_h)
     b = check_finite("beta_h", beta_h)
     g = check_finite("gamma_h", gamma_h)
-    return _out((4 - 2 * a - b > 0) & (2 * a - g > 0) & (b > 0) & (g > 0))
+    return scalar_or_array((4 - 2 * a - b > 0) & (2 * a - g > 0) & (b > 0) & (g > 0))
 
 
 def stable_huang_eq7(alpha_h, beta_h):
@@ -275,7 +266,7 @@ def stable_huang_eq7(alpha_h, beta_h):
     """
     a = check_finite("alpha_h", alpha_h)
     b = check_finite("beta_h", beta_h)
-    return _out((a > -b) & (b > 0))
+    return scalar_or_array((a > -b) & (b > 0))
 
 
 def stable_alwagih_eq12_14(alpha, beta):
@@ -300,4 +291,4 @@ def stable_alwagih_eq12_14(alpha, beta):
     """
     a = check_finite("alpha", alpha)
     b = check_finite("beta", beta)
-    return _out((0 < a) & (a < 2) & (b > 0) & (2 * a + b < 4))
+    return scalar_or_array((0 < a) & (a < 2) & (b > 0) & (2 * a + b < 4))

@@ -15,7 +15,7 @@ from math import comb
 import numpy as np
 
 from .._checks import AbglibValueError, check_finite, check_positive
-from ..gains import Gains
+from ..gains import Gains, require_gains
 
 __all__ = [
     "OUTPUTS",
@@ -29,10 +29,6 @@ OUTPUTS = ("x_smooth", "v_smooth", "a_smooth", "x_pred", "v_pred", "a_pred")
 
 
 # --------------------------------------------------------------------------- checks
-def _check_gains(gains) -> Gains:
-    if not isinstance(gains, Gains):
-        raise AbglibValueError(f"gains must be an abglib.Gains, got {type(gains).__name__}")
-    return gains
 
 
 def _check_output(output, allowed=OUTPUTS) -> str:
@@ -165,7 +161,7 @@ def transfer_function(gains: Gains, output: str, dt: float = 1.0):
     >>> num, den
     (array([ 0. ,  0.7, -0.5]), array([ 1. , -1.3,  0.5]))
     """
-    gains = _check_gains(gains)
+    gains = require_gains(gains)
     output = _check_output(output)
     T = _check_dt(dt)
     a, b, g = _gain_arrays(gains)
@@ -250,7 +246,7 @@ def frequency_response(gains: Gains, output: str, wT, dt: float = 1.0):
     :math:`\\gamma = 0` the common factor :math:`w` is cancelled first (eq 41), so that
     :math:`\\omega T = 0` gives the DC gain, not 0/0.
     """
-    gains = _check_gains(gains)
+    gains = require_gains(gains)
     output = _check_output(output)
     T = _check_dt(dt)
     w_arr = check_finite("wT", wT)

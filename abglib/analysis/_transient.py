@@ -22,10 +22,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._checks import AbglibValueError, check_finite, check_positive
+from .._checks import AbglibValueError, check_finite, check_positive, scalar_or_array
 from ..engine import track
 from ..gains import Gains
-from ._variance import _broadcast, _check_stable, _out, _pole_radius
+from ._variance import _broadcast, _check_stable, _pole_radius
 
 __all__ = [
     "steady_state_lag",
@@ -89,7 +89,7 @@ def transient_d2_simpson(gains: Gains, dt=1.0) -> dict:
         dx = np.where(ab, (2.0 - a) * (1.0 - a) ** 2 / lim, dx)
         dv = np.where(ab, (a * a * (2.0 - a) + 2.0 * b * (1.0 - a)) / lim / T**2, dv)
         da = np.where(ab, 0.0, da)
-    return {"x": _out(dx), "v": _out(dv), "a": _out(da)}
+    return {"x": scalar_or_array(dx), "v": scalar_or_array(dv), "a": scalar_or_array(da)}
 
 
 def transient_a2_simpson(gains: Gains, dt=1.0) -> dict:
@@ -139,7 +139,7 @@ def transient_a2_simpson(gains: Gains, dt=1.0) -> dict:
         ax = np.where(ab, np.where(a == 1.0, 0.0, np.inf), ax)
         av = np.where(ab, np.where(b == 2.0 * a, (2.0 - a) * q / (16.0 * a * b * T**2), np.inf), av)
         aa = np.where(ab, np.inf, aa)
-    return {"x": _out(ax), "v": _out(av), "a": _out(aa)}
+    return {"x": scalar_or_array(ax), "v": scalar_or_array(av), "a": scalar_or_array(aa)}
 
 
 # --------------------------------------------------------------------------- exact
@@ -202,7 +202,7 @@ def _summed(gains, dt, n_max, rtol, kind: str) -> dict:
                     f"{keys[i]} sum add {tail:.3g} of {total:.3g}"
                 )
             out[idx + (i,)] = total
-    return {k: _out(out[..., i]) for i, k in enumerate(keys)}
+    return {k: scalar_or_array(out[..., i]) for i, k in enumerate(keys)}
 
 
 def transient_d2(gains: Gains, dt=1.0, n_max=2_000_000, rtol=1e-12) -> dict:
@@ -348,7 +348,7 @@ def steady_state_lag(gains: Gains, dt=1.0, kind="acceleration", magnitude=1.0, o
         else:
             grow = np.where(m == 0.0, 0.0, np.copysign(np.inf, m))
             lag = np.where(g == 0.0, np.where(factor == 0.0, 0.0, grow), factor * m * T**3 / g)
-    return _out(np.asarray(lag, dtype=float))
+    return scalar_or_array(np.asarray(lag, dtype=float))
 
 
 def steady_state_lag_huang(gain, magnitude, dt, kind="acceleration"):
@@ -386,4 +386,4 @@ def steady_state_lag_huang(gain, magnitude, dt, kind="acceleration"):
     T = check_positive("dt", dt)
     fr = 1.0 / T
     power = 2 if kind == "acceleration" else 3
-    return _out(np.asarray(m / (k * fr**power), dtype=float))
+    return scalar_or_array(np.asarray(m / (k * fr**power), dtype=float))

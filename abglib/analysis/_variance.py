@@ -22,8 +22,8 @@ from __future__ import annotations
 import numpy as np
 import scipy.linalg
 
-from .._checks import AbglibValueError, check_in_range, check_positive
-from ..gains import Gains
+from .._checks import AbglibValueError, check_in_range, check_positive, scalar_or_array
+from ..gains import Gains, require_gains
 from ._statespace import state_space
 
 __all__ = [
@@ -40,15 +40,11 @@ VRF_KEYS = ("x_smooth", "v_smooth", "a_smooth", "x_pred", "v_pred", "a_pred")
 
 
 # --------------------------------------------------------------------------- helpers
-def _require_gains(gains) -> Gains:
-    if not isinstance(gains, Gains):
-        raise AbglibValueError(f"gains must be an abglib.Gains, got {type(gains).__name__}")
-    return gains
 
 
 def _broadcast(gains, dt):
     """``(alpha, beta, gamma, T)`` as float64 arrays of one broadcast shape."""
-    g = _require_gains(gains)
+    g = require_gains(gains)
     T = check_positive("dt", dt)
     try:
         return np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in g), T)
@@ -56,11 +52,6 @@ def _broadcast(gains, dt):
         raise AbglibValueError(
             f"dt of shape {T.shape} does not broadcast against gains of shape {g.shape}"
         ) from None
-
-
-def _out(arr: np.ndarray):
-    """A Python float for 0-d results, else the array."""
-    return float(arr) if np.ndim(arr) == 0 else arr
 
 
 def _pole_radius(alpha: float, beta: float, gamma: float) -> float:
@@ -153,7 +144,7 @@ def vrf(gains: Gains, dt=1.0) -> dict:
     out = np.empty(a.shape + (len(VRF_KEYS),))
     for idx in np.ndindex(a.shape):
         out[idx] = _vrf_one(float(a[idx]), float(b[idx]), float(g[idx]), float(T[idx]))
-    return {k: _out(out[..., i]) for i, k in enumerate(VRF_KEYS)}
+    return {k: scalar_or_array(out[..., i]) for i, k in enumerate(VRF_KEYS)}
 
 
 # --------------------------------------------------------------------------- printed
@@ -196,10 +187,10 @@ def vrf_benedict_ab(gains: Gains, dt=1.0) -> dict:
     den = a * (4.0 - 2.0 * a - b)
     kv = 2.0 * b * b / den / T**2
     return {
-        "x_smooth": _out((2.0 * a * a + 2.0 * b - 3.0 * a * b) / den),
-        "v_smooth": _out(kv),
-        "x_pred": _out((2.0 * a * a + 2.0 * b + a * b) / den),
-        "v_pred": _out(kv.copy()),
+        "x_smooth": scalar_or_array((2.0 * a * a + 2.0 * b - 3.0 * a * b) / den),
+        "v_smooth": scalar_or_array(kv),
+        "x_pred": scalar_or_array((2.0 * a * a + 2.0 * b + a * b) / den),
+        "v_pred": scalar_or_array(kv.copy()),
     }
 
 
@@ -247,7 +238,7 @@ def vrf_simpson(gains: Gains, dt=1.0) -> dict:
         kx = np.where(ab, (2.0 * a * a + 2.0 * b - 3.0 * a * b) / (a * q), kx)
         kv = np.where(ab, 2.0 * b * b / (a * q) / T**2, kv)
         ka = np.where(ab, 0.0, ka)
-    return {"x": _out(kx), "v": _out(kv), "a": _out(ka)}
+    return {"x": scalar_or_array(kx), "v": scalar_or_array(kv), "a": scalar_or_array(ka)}
 
 
 def _theta(theta) -> np.ndarray:
@@ -300,7 +291,7 @@ def vrf_standard_abg(theta, dt=1.0) -> dict:
     kx = (1.0 - th) / p5 * (19.0 + 24.0 * th + 16.0 * th**2 + 6.0 * th**3 + th**4)  # eq 25
     kv = (1.0 - th) ** 3 / p5 * (49.0 + 50.0 * th + 13.0 * th**2) / 2.0 / T**2  # eq 26
     ka = 6.0 * (1.0 - th) ** 5 / p5 / T**4  # eq 27
-    return {"x": _out(kx), "v": _out(kv), "a": _out(ka)}
+    return {"x": scalar_or_array(kx), "v": scalar_or_array(kv), "a": scalar_or_array(ka)}
 
 
 def vrf_standard_ab(theta, dt=1.0) -> dict:
@@ -334,4 +325,4 @@ def vrf_standard_ab(theta, dt=1.0) -> dict:
     p3 = (1.0 + th) ** 3
     kx = (1.0 - th) / p3 * (5.0 + 4.0 * th + th**2)  # eq 31
     kv = 2.0 * (1.0 - th) ** 3 / p3 / T**2  # eq 32
-    return {"x": _out(kx), "v": _out(kv)}
+    return {"x": scalar_or_array(kx), "v": scalar_or_array(kv)}
