@@ -150,9 +150,9 @@ def test_peak_two_routes_and_brute_force(gains, output):
     assert ov_poly == pytest.approx(ov_grid, rel=1e-8, abs=1e-12)
     # a flat maximum fixes its location only to ~sqrt(eps) from function values (grid route)
     assert w_poly == pytest.approx(w_grid, rel=1e-6, abs=1e-7)
-    # no grid point beats the exact peak, up to rounding relative to the peak's size
-    # (resonant gains reach |H| ~ 20: an absolute 1e-12 was below float resolution there)
-    assert mag(gains, DENSE, output).max() <= (1 + ov_poly) * (1 + 1e-12)
+    # no grid point beats the exact peak, up to the polynomial route's accuracy stated
+    # above (rel 1e-8 near the stability boundary, where |H| reaches ~1e2)
+    assert mag(gains, DENSE, output).max() <= (1 + ov_poly) * (1 + 1e-8)
     assert mag(gains, w_poly, output) == pytest.approx(1 + ov_poly, rel=1e-9)
 
 
@@ -269,7 +269,12 @@ def test_bad_input(call, match):
 
 @pytest.mark.parametrize(
     "gains",
-    [Gains(1.9, 0.05, 0.001), Gains(0.05, 0.9, 0.02)],  # stable, peaks |H| = 25.0 and 36.8
+    # stable, peaks |H| = 25.0, 36.8 and 87.8 (the last found by hypothesis locally)
+    [
+        Gains(1.9, 0.05, 0.001),
+        Gains(0.05, 0.9, 0.02),
+        Gains(1.8906142833470365, 0.17775178956106566, 3.0722482104389344),
+    ],
 )
 def test_peak_bound_is_relative_for_strongly_resonant_gains(gains):
     # pinned after a CI hypothesis run: for resonant stable gains (peak |H| ~ 20-40) an
@@ -278,5 +283,5 @@ def test_peak_bound_is_relative_for_strongly_resonant_gains(gains):
     w, ov = peak(gains, "x_smooth")
     assert ov > 20
     dense = mag(gains, DENSE, "x_smooth")
-    assert dense.max() <= (1 + ov) * (1 + 1e-12)
+    assert dense.max() <= (1 + ov) * (1 + 1e-8)
     assert dense.max() >= (1 + ov) * (1 - 1e-3)  # and the dense grid does come close

@@ -28,7 +28,8 @@ from .._checks import AbglibValueError, check_finite, check_positive, scalar_or_
 from ..conventions import from_huang
 from ..engine import track
 from ..gains import Gains
-from ._variance import _broadcast, _check_stable, _pole_radius, vrf
+from ._stability import pole_radius, require_stable
+from ._variance import _broadcast, vrf
 
 __all__ = ["enbw", "enbw_huang_eq8_13", "enbw_huang_eq14", "enbw_numeric"]
 
@@ -64,7 +65,7 @@ def enbw(gains: Gains, dt=1.0):
     3.571429
     """
     a, b, g, T = _broadcast(gains, dt)
-    _check_stable(a, b, g, _UNSTABLE)
+    require_stable(Gains(a, b, g), _UNSTABLE)
     return scalar_or_array(np.asarray(vrf(Gains(a, b, g), T)["x_pred"]) / (2.0 * T))
 
 
@@ -95,7 +96,7 @@ def _integral_one(alpha: float, beta: float, gamma: float) -> float:
 
 def _impulse_one(alpha: float, beta: float, gamma: float) -> float:
     """``sum h_k^2`` from :func:`abglib.track` on a unit impulse."""
-    r = _pole_radius(alpha, beta, gamma)
+    r = pole_radius(Gains(alpha, beta, gamma))
     n = 64 if r < 1e-3 else int(np.ceil(2.0 * np.log(1e-20) / np.log(r))) + 64
     z = np.zeros(n)
     z[0] = 1.0
@@ -135,7 +136,7 @@ def enbw_numeric(gains: Gains, dt=1.0, method="integral"):
             f"method must be one of {', '.join(map(repr, methods))}, got {method!r}"
         )
     a, b, g, T = _broadcast(gains, dt)
-    _check_stable(a, b, g, _UNSTABLE)
+    require_stable(Gains(a, b, g), _UNSTABLE)
     one = _integral_one if method == "integral" else _impulse_one
     out = np.empty(a.shape)
     for idx in np.ndindex(a.shape):
@@ -147,7 +148,7 @@ def enbw_numeric(gains: Gains, dt=1.0, method="integral"):
 def _huang_stable(alpha_h, beta_h, gamma_h):
     """Stability check of gains given in Huang's convention (canonical gamma = 2 gamma_H)."""
     g = from_huang(alpha_h, beta_h, gamma_h)
-    _check_stable(g.alpha, g.beta, g.gamma, _UNSTABLE)
+    require_stable(g, _UNSTABLE)
 
 
 def enbw_huang_eq14(alpha, beta, dt):

@@ -14,11 +14,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._checks import check_finite, scalar_or_array
+from .._checks import AbglibValueError, check_finite, scalar_or_array
 from ..gains import Gains, require_gains
 
 __all__ = [
     "characteristic_polynomial",
+    "require_stable",
     "is_stable",
     "pole_radius",
     "poles",
@@ -166,6 +167,27 @@ def is_stable(gains: Gains):
     modulus of the numeric poles and against the state-space matrix ``F``.
     """
     return scalar_or_array(_jury(require_gains(gains)))
+
+
+def require_stable(gains: Gains, what: str = "steady-state response is undefined") -> None:
+    """Raise unless every gain set of ``gains`` is strictly stable (:func:`is_stable`).
+
+    ``what`` completes the message "the <what>: gains (...) are unstable", e.g.
+    ``"steady-state variance is unbounded"``; the first unstable set of a bank is named
+    with its index and its largest pole radius.
+    """
+    ok = np.asarray(_jury(require_gains(gains)))
+    if ok.all():
+        return
+    idx = tuple(int(i) for i in np.argwhere(~ok)[0]) if ok.ndim else ()
+    a, b, g = (float(v[idx]) for v in gains.as_arrays())
+    r = pole_radius(Gains(a, b, g))
+    where = f" at index {idx if len(idx) != 1 else idx[0]}" if idx else ""
+    raise AbglibValueError(
+        f"the {what}: gains (alpha={a!r}, beta={b!r}, gamma={g!r}){where} are unstable "
+        f"(largest pole radius {r:.6g} >= 1); gains must be stable (all poles strictly "
+        "inside the unit circle)"
+    )
 
 
 def stable_jury_steelman(gains: Gains):

@@ -25,7 +25,8 @@ import numpy as np
 from .._checks import AbglibValueError, check_finite, check_positive, scalar_or_array
 from ..engine import track
 from ..gains import Gains
-from ._variance import _broadcast, _check_stable, _pole_radius
+from ._stability import pole_radius, require_stable
+from ._variance import _broadcast
 
 __all__ = [
     "steady_state_lag",
@@ -73,7 +74,7 @@ def transient_d2_simpson(gains: Gains, dt=1.0) -> dict:
     ``D_a^2 = 0`` -- which equal the exact alpha-beta sums.
     """
     a, b, g, T = _broadcast(gains, dt)
-    _check_stable(a, b, g, _UNSTABLE)
+    require_stable(Gains(a, b, g), _UNSTABLE)
     q = 4.0 - 2.0 * a - b
     ab = g == 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -128,7 +129,7 @@ def transient_a2_simpson(gains: Gains, dt=1.0) -> dict:
     / (16\alpha\beta T^2)`` at ``beta = 2 alpha`` (no steady velocity error).
     """
     a, b, g, T = _broadcast(gains, dt)
-    _check_stable(a, b, g, _UNSTABLE)
+    require_stable(Gains(a, b, g), _UNSTABLE)
     q = 4.0 - 2.0 * a - b
     ab = g == 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -152,7 +153,7 @@ def _auto_length(radius: float) -> int:
 
 def _summed(gains, dt, n_max, rtol, kind: str) -> dict:
     a, b, g, T = _broadcast(gains, dt)
-    _check_stable(a, b, g, _UNSTABLE)
+    require_stable(Gains(a, b, g), _UNSTABLE)
     n_max = int(n_max)
     if n_max < 16:
         raise AbglibValueError(f"n_max must be >= 16, got {n_max}")
@@ -166,7 +167,7 @@ def _summed(gains, dt, n_max, rtol, kind: str) -> dict:
             # x_smooth, v_smooth, a_smooth, x_pred (final-value theorem, seed 000 eq 36-39)
             e_ss = ((1.0 - al) / be, al / be - 0.5, 1.0, 1.0 / be)
             diverge = np.array([e != 0.0 for e in e_ss])
-        N = _auto_length(_pole_radius(al, be, ga))
+        N = _auto_length(pole_radius(Gains(al, be, ga)))
         if N > n_max:
             raise AbglibValueError(
                 f"direct summation needs about {N} samples for gains (alpha={al!r}, "
@@ -333,7 +334,7 @@ def steady_state_lag(gains: Gains, dt=1.0, kind="acceleration", magnitude=1.0, o
             f"output must be one of {', '.join(map(repr, _LAG_OUTPUTS))}, got {output!r}"
         )
     a, b, g, T = _broadcast(gains, dt)
-    _check_stable(a, b, g, "steady-state lag is undefined")
+    require_stable(Gains(a, b, g), "steady-state lag is undefined")
     m = check_finite("magnitude", magnitude)
     try:
         a, b, g, T, m = np.broadcast_arrays(a, b, g, T, m)

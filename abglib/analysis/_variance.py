@@ -24,6 +24,7 @@ import scipy.linalg
 
 from .._checks import AbglibValueError, check_in_range, check_positive, scalar_or_array
 from ..gains import Gains, require_gains
+from ._stability import require_stable
 from ._statespace import state_space
 
 __all__ = [
@@ -52,32 +53,6 @@ def _broadcast(gains, dt):
         raise AbglibValueError(
             f"dt of shape {T.shape} does not broadcast against gains of shape {g.shape}"
         ) from None
-
-
-def _pole_radius(alpha: float, beta: float, gamma: float) -> float:
-    """Largest pole modulus of one scalar gain set (reduced model when gamma == 0)."""
-    F = state_space(Gains(alpha, beta, gamma), 1.0).F
-    return float(np.max(np.abs(np.linalg.eigvals(F))))
-
-
-def _check_stable(alpha, beta, gamma, what: str) -> None:
-    """Raise unless every gain set of the (broadcast) arrays is strictly stable.
-
-    ``what`` completes the sentence "the ... is unbounded" / "... is undefined" in the
-    message, e.g. ``"steady-state variance is unbounded"``.
-    """
-    alpha, beta, gamma = np.broadcast_arrays(
-        np.asarray(alpha, float), np.asarray(beta, float), np.asarray(gamma, float)
-    )
-    for idx in np.ndindex(alpha.shape):
-        a, b, g = float(alpha[idx]), float(beta[idx]), float(gamma[idx])
-        r = _pole_radius(a, b, g)
-        if not r < 1.0:
-            where = f" at index {idx if len(idx) != 1 else idx[0]}" if idx else ""
-            raise AbglibValueError(
-                f"the {what}: gains (alpha={a!r}, beta={b!r}, gamma={g!r}){where} are "
-                f"unstable (largest pole radius {r:.6g} >= 1)"
-            )
 
 
 # --------------------------------------------------------------------------- exact
@@ -140,7 +115,7 @@ def vrf(gains: Gains, dt=1.0) -> dict:
     (0.428571, 0.714286)
     """
     a, b, g, T = _broadcast(gains, dt)
-    _check_stable(a, b, g, "steady-state variance is unbounded")
+    require_stable(Gains(a, b, g), "steady-state variance is unbounded")
     out = np.empty(a.shape + (len(VRF_KEYS),))
     for idx in np.ndindex(a.shape):
         out[idx] = _vrf_one(float(a[idx]), float(b[idx]), float(g[idx]), float(T[idx]))
@@ -183,7 +158,7 @@ def vrf_benedict_ab(gains: Gains, dt=1.0) -> dict:
             "vrf_benedict_ab is the alpha-beta closed form and needs gamma == 0, got "
             f"gamma={float(g[g != 0.0].flat[0])!r}; use vrf_simpson for alpha-beta-gamma"
         )
-    _check_stable(a, b, g, "steady-state variance is unbounded")
+    require_stable(Gains(a, b, g), "steady-state variance is unbounded")
     den = a * (4.0 - 2.0 * a - b)
     kv = 2.0 * b * b / den / T**2
     return {
@@ -226,7 +201,7 @@ def vrf_simpson(gains: Gains, dt=1.0) -> dict:
     are returned, with ``a = 0``.
     """
     a, b, g, T = _broadcast(gains, dt)
-    _check_stable(a, b, g, "steady-state variance is unbounded")
+    require_stable(Gains(a, b, g), "steady-state variance is unbounded")
     ab = g == 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
         q = 4.0 - 2.0 * a - b
