@@ -61,6 +61,26 @@ def _match(value, candidates: dict, rtol) -> str:
     )
 
 
+def _morrison_rows(printed, eqs, exact_vrf, case, rtol):
+    """Rows for Morrison's k_x, k_v(, k_a) (eqs 25-27 or 31-32) against every exact VRF."""
+    rows = []
+    for eq, key in zip(eqs, ("x", "v", "a"), strict=False):
+        cands = {k: exact_vrf[k] for k in _VRF_EXACT[key]}
+        rows.append(
+            _row(
+                eq,
+                f"k_{key}(0), Morrison",
+                case,
+                printed[key],
+                exact_vrf[_VRF_EXACT[key][0]],
+                "exact",
+                rtol,
+                _match(printed[key], cands, rtol),
+            )
+        )
+    return rows
+
+
 def _impulse_dft_error(gains, output, n):
     """max |H(e^{jwT}) - DFT(impulse response of track())| over the DFT bins (eqs 36-39)."""
     z = np.zeros(n)
@@ -139,38 +159,12 @@ def equation_table(cfg: dict, eq53_exponents) -> pd.DataFrame:
                     comment="all three poles at z = θ",
                 )
             )
-            printed = A.vrf_standard_abg(theta)
-            for eq, key in (("25", "x"), ("26", "v"), ("27", "a")):
-                cands = {k: exact_vrf[k] for k in _VRF_EXACT[key]}
-                rows.append(
-                    _row(
-                        eq,
-                        f"k_{key}(0), Morrison",
-                        case,
-                        printed[key],
-                        exact_vrf[_VRF_EXACT[key][0]],
-                        "exact",
-                        rtol,
-                        _match(printed[key], cands, rtol),
-                    )
-                )
+            rows += _morrison_rows(
+                A.vrf_standard_abg(theta), ("25", "26", "27"), exact_vrf, case, rtol
+            )
         if kind == "ab":
             theta = design.standard_theta_from_alpha(g.alpha, 2)
-            printed = A.vrf_standard_ab(theta)
-            for eq, key in (("31", "x"), ("32", "v")):
-                cands = {k: exact_vrf[k] for k in _VRF_EXACT[key]}
-                rows.append(
-                    _row(
-                        eq,
-                        f"k_{key}(0), Morrison",
-                        case,
-                        printed[key],
-                        exact_vrf[_VRF_EXACT[key][0]],
-                        "exact",
-                        rtol,
-                        _match(printed[key], cands, rtol),
-                    )
-                )
+            rows += _morrison_rows(A.vrf_standard_ab(theta), ("31", "32"), exact_vrf, case, rtol)
             a, b = g.alpha, g.beta
             cp = A.characteristic_polynomial(g)[1:]
             rows.append(
