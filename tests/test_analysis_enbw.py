@@ -20,41 +20,10 @@ from abglib.analysis._enbw import enbw, enbw_huang_eq8_13, enbw_huang_eq14, enbw
 from abglib.analysis._variance import vrf
 from abglib.conventions import from_huang, to_huang
 
+from .strategies import stable_gain_strategies, standard_ab, standard_abg
 
-def standard_abg(theta):
-    """Standard (critically damped) gains, seed 000 eqs 22-24."""
-    return Gains(1 - theta**3, 1.5 * (1 - theta) ** 2 * (1 + theta), (1 - theta) ** 3)
+stable_ab, stable_abg = stable_gain_strategies(0.95, 1e-6)
 
-
-def standard_ab(theta):
-    """Standard alpha-beta gains, seed 000 (unnumbered, before eq 31)."""
-    return Gains(1 - theta**2, (1 - theta) ** 2)
-
-
-def gains_from_poles(p):
-    """Gains with the characteristic roots ``p`` (seed 000, eqs 40-41; see variance tests)."""
-    c = np.real(np.poly(p))
-    if len(p) == 2:
-        alpha = 1.0 - c[2]
-        return Gains(alpha, c[1] + 2.0 - alpha)
-    alpha = 1.0 + c[3]
-    gamma = c[2] + c[1] + alpha
-    return Gains(alpha, c[1] + 3.0 - alpha - gamma / 2.0, gamma)
-
-
-radius = st.floats(0.0, 0.95)
-angle = st.floats(0.05, np.pi - 0.05)
-real_pole = st.floats(-0.95, 0.95)
-pole_pair = st.tuples(radius, angle).map(
-    lambda ra: [ra[0] * np.exp(1j * ra[1]), ra[0] * np.exp(-1j * ra[1])]
-)
-two_real = st.tuples(real_pole, real_pole).map(list)
-stable_ab = st.one_of(pole_pair, two_real).map(gains_from_poles)
-stable_abg = (
-    st.tuples(st.one_of(pole_pair, two_real), real_pole)
-    .map(lambda t: gains_from_poles(t[0] + [t[1]]))
-    .filter(lambda g: g.gamma > 1e-6)
-)
 dts = st.sampled_from([1 / 300, 0.1, 1.0])  # 1/300 s: seed 002's F_r = 300 Hz
 
 

@@ -24,47 +24,12 @@ from abglib.analysis._variance import (
     vrf_standard_abg,
 )
 
+from .strategies import stable_gain_strategies, standard_ab, standard_abg
 
 # --------------------------------------------------------------------------- strategies
-def standard_abg(theta):
-    """Standard (critically damped) gains, seed 000 eqs 22-24."""
-    return Gains(1 - theta**3, 1.5 * (1 - theta) ** 2 * (1 + theta), (1 - theta) ** 3)
+# pole radius < 0.95 keeps the sums short
+stable_ab, stable_abg = stable_gain_strategies(0.95, 1e-6)
 
-
-def standard_ab(theta):
-    """Standard alpha-beta gains, seed 000 (unnumbered, before eq 31)."""
-    return Gains(1 - theta**2, (1 - theta) ** 2)
-
-
-def gains_from_poles(p):
-    """Gains whose characteristic polynomial (seed 000, eq 40) has the roots ``p``.
-
-    eq 40 expands to z^3 + (a + b + g/2 - 3) z^2 + (3 - 2a - b + g/2) z - (1 - a); for two
-    roots (alpha-beta, eq 41): z^2 + (a + b - 2) z + (1 - a). Any roots inside the unit
-    circle give stable gains, independently of the library's stability code.
-    """
-    c = np.real(np.poly(p))
-    if len(p) == 2:
-        alpha = 1.0 - c[2]
-        return Gains(alpha, c[1] + 2.0 - alpha)
-    alpha = 1.0 + c[3]
-    gamma = c[2] + c[1] + alpha
-    return Gains(alpha, c[1] + 3.0 - alpha - gamma / 2.0, gamma)
-
-
-radius = st.floats(0.0, 0.95)  # pole radius < 0.95 keeps the sums short
-angle = st.floats(0.05, np.pi - 0.05)
-real_pole = st.floats(-0.95, 0.95)
-pole_pair = st.tuples(radius, angle).map(
-    lambda ra: [ra[0] * np.exp(1j * ra[1]), ra[0] * np.exp(-1j * ra[1])]
-)
-two_real = st.tuples(real_pole, real_pole).map(list)
-stable_ab = st.one_of(pole_pair, two_real).map(gains_from_poles)
-stable_abg = (
-    st.tuples(st.one_of(pole_pair, two_real), real_pole)
-    .map(lambda t: gains_from_poles(t[0] + [t[1]]))
-    .filter(lambda g: g.gamma > 1e-6)  # gamma = 0 means a pole at z = 1
-)
 dts = st.sampled_from([0.01, 0.5, 1.0, 3.0])  # sample intervals in seconds (arbitrary)
 
 
