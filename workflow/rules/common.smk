@@ -67,6 +67,18 @@ REPORT_CONTENT = {
             "responses",
         ],
     },
+    "huang": {
+        "figures": ["fig2", "fig3", "fig4", "fig5", "fig6", "fig7"],
+        "tables": [
+            "comparison",
+            "tables12",
+            "enbw_routes",
+            "track_metrics",
+            "checks",
+            "bandwidth_curves",
+            "thermal",
+        ],
+    },
 }
 
 
