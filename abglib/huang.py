@@ -182,8 +182,10 @@ def enbw_huang_eq13_as_printed(alpha_h, beta_h, gamma_h, dt):
     formula gives values of the order of the paper's nominal bandwidths for the printed
     type II alpha-beta-gamma gains, where the exact ENBW is 100-340 Hz.
     """
-    a, b, g = (float(check_finite(n, v)) for n, v in
-               (("alpha_h", alpha_h), ("beta_h", beta_h), ("gamma_h", gamma_h)))
+    a, b, g = (
+        float(check_finite(n, v))
+        for n, v in (("alpha_h", alpha_h), ("beta_h", beta_h), ("gamma_h", gamma_h))
+    )
     T = float(check_positive("dt", dt))
     if g <= 0.0:
         raise AbglibValueError(f"gamma_h must be > 0 (eq 13 is for alpha-beta-gamma), got {g!r}")

@@ -273,7 +273,9 @@ def huang_bandwidth_figure(
             c = d[d["order"] == order]
             name = _HUANG_TRACKERS[order]
             closed = "eq 14" if order == 2 else "eqs 8–13 (reconstructed)"
-            ax.semilogy(c["xi"], c["bnT_exact"], "-", color=color, label=f"{name}: exact (Lyapunov)")
+            ax.semilogy(
+                c["xi"], c["bnT_exact"], "-", color=color, label=f"{name}: exact (Lyapunov)"
+            )
             ax.semilogy(
                 c["xi"].iloc[::6], c["bnT_closed"].iloc[::6], "o", ms=3.5, mfc="none",
                 color=color, label=f"{name}: {closed}",
@@ -360,7 +362,9 @@ def huang_track_figure(track: pd.DataFrame, panels: list, title: str = "", noisy
             for i, (name, label) in enumerate(names):
                 if noisy:
                     ax.plot(t, track[f"err_{name}"], color=f"C{i}", lw=0.4, alpha=0.45)
-                ax.plot(t, track[f"lag_{name}"], color=f"C{i}", lw=1.6, label=f"{label} (noise-free)")
+                ax.plot(
+                    t, track[f"lag_{name}"], color=f"C{i}", lw=1.6, label=f"{label} (noise-free)"
+                )
             ax.axhline(0.0, color="k", lw=0.6)
             ax.set_ylabel("range error R − R_p (m)")
             ax.set_title(ptitle, fontsize=9)

@@ -21,8 +21,6 @@ rule huang_reproduce:
     input:
         published=sorted(str(f) for f in (PUBLISHED / "huang").glob("*.csv")),
     output:
-        reproduced="results/huang/reproduced.csv",
-        alternatives="results/huang/alternatives.csv",
         **{
             t: report(
                 f"results/huang/{t}.csv",
@@ -32,6 +30,8 @@ rule huang_reproduce:
             )
             for t in HUANG_TABLES
         },
+        reproduced="results/huang/reproduced.csv",
+        alternatives="results/huang/alternatives.csv",
     log:
         "logs/huang/reproduce.log",
     benchmark:

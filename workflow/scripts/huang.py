@@ -70,8 +70,14 @@ def tables12(cells, dt, mc) -> pd.DataFrame:
         row = {"cell": c["base"]}
         row.update(
             huang.table_row(
-                c["rule"], c["order"], c["bn_hz"], c["alpha_h"], c["beta_h"], c["gamma_h"],
-                c["xi"], dt,
+                c["rule"],
+                c["order"],
+                c["bn_hz"],
+                c["alpha_h"],
+                c["beta_h"],
+                c["gamma_h"],
+                c["xi"],
+                dt,
             )
         )
         g = from_huang(c["alpha_h"], c["beta_h"], c["gamma_h"])
@@ -318,7 +324,11 @@ def checks(cfg, dt, tab: pd.DataFrame, routes: pd.DataFrame, met: pd.DataFrame) 
         cfg["sigma_budget_m"], radar["fr_hz"], radar["tau_s"], radar["snr_db"], radar["k"]
     )
     b7b = huang.bandwidth_for_sigma(
-        cfg["sigma_budget_m"], radar["fr_hz"], radar["tau_s"], radar["snr_db"], radar["k"],
+        cfg["sigma_budget_m"],
+        radar["fr_hz"],
+        radar["tau_s"],
+        radar["snr_db"],
+        radar["k"],
         form="barton",
     )
     out["fig4.sigma_at_40hz"] = (
@@ -353,8 +363,10 @@ def checks(cfg, dt, tab: pd.DataFrame, routes: pd.DataFrame, met: pd.DataFrame) 
     )
     a2, ab2 = m.loc["abg_t2_2"], m.loc["ab_t2_2_printed"]
     out["fig5.abg_2hz"] = (
-        bool(abs(a2["lag_end"]) <= cfg["sigma_budget_m"]
-             and a2["rms_settled"] <= cfg["sigma_budget_m"]),
+        bool(
+            abs(a2["lag_end"]) <= cfg["sigma_budget_m"]
+            and a2["rms_settled"] <= cfg["sigma_budget_m"]
+        ),
         f"alpha-beta-gamma at 2 Hz: settled lag {a2['lag_end']:.2f} m (jerk), settled RMS "
         f"{a2['rms_settled']:.2f} m; but its acquisition transient peaks at "
         f"{a2['peak_lag']:.1f} m against the discriminator's {cfg['_gate_m']:.1f} m",
@@ -517,8 +529,15 @@ def main(input, output, params) -> None:
     sigma_m = huang.measurement_sigma(radar["tau_s"], radar["snr_db"], radar["k"])
     n = int(round(sim["duration_s"] / dt))
     trk = huang.simulate_range_track(
-        trackers, dt, n, tgt["accel"], tgt["jerk"], sigma_m, int(sim["seed"]),
-        tgt["r0"], tgt["v0"],
+        trackers,
+        dt,
+        n,
+        tgt["accel"],
+        tgt["jerk"],
+        sigma_m,
+        int(sim["seed"]),
+        tgt["r0"],
+        tgt["v0"],
     )
     met = track_metrics(trk, trackers, dt, gate, sim["settle_fraction"])
     met.insert(1, "sigma_measurement_m", sigma_m)
