@@ -111,3 +111,20 @@ def test_second_run_schedules_nothing(two_runs):
     out = _snakemake(two_runs[0], "-n")
     assert out.returncode == 0
     assert "Nothing to be done" in out.stdout + out.stderr
+
+
+def test_huang_outputs(two_runs):
+    d = two_runs[0]
+    for rel in [
+        "results/huang/comparison.csv",
+        REPORTS / "huang" / "index.html",
+        REPORTS / "huang" / "tables" / "comparison.csv",
+        *(REPORTS / "huang" / "figures" / f"fig{i}.png" for i in range(2, 8)),
+    ]:
+        assert (d / rel).is_file(), rel
+    comp = pd.read_csv(d / "results/huang/comparison.csv", dtype=str, keep_default_na=False)
+    published = sum(
+        len(pd.read_csv(p, comment="#")) for p in (REPO / "data/published/huang").glob("*.csv")
+    )
+    assert len(comp) == published
+    assert (comp.loc[comp["verdict"] != "match", "note"].str.len() > 0).all()
