@@ -248,7 +248,7 @@ display(
 #   which follow no reading of the rule we found (not γ canonical, not the unsolved 2β =
 #   α(α + β + γ)). The 10 and 20 Hz sets are unstable; the 2 Hz set has 97.5 Hz.
 # * **α-β-γ, type II**: gains = rule at the printed ξ, ENBW 177 / 287 / 339 Hz. The nominal
-#   bandwidths need ξ = 0.990 / 0.969 / 0.940. Eq 13 read literally gives 3.0 / 12.4 / 19.3
+#   bandwidths need ξ = 0.990 / 0.969 / 0.940. Eq 13 read literally gives 3.1 / 12.4 / 19.3
 #   Hz for the printed sets — the same order as the nominal 2 / 10 / 20 Hz — which suggests
 #   the table was computed from the uncorrected eq 13 (not exactly: the printed ξ would need
 #   2 / 10 / 20 Hz from it at ξ ≈ 0.69 / 0.565 / 0.505).
