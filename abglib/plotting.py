@@ -349,8 +349,9 @@ def huang_track_figure(track: pd.DataFrame, panels: list, title: str = "", noisy
     track : DataFrame
         ``track.csv``: ``t`` and per tracker ``err_<name>`` (with noise) and
         ``lag_<name>`` (noise-free), truth minus predicted position, m.
-    panels : list of (str, list of (name, label))
-        One panel per entry: its title and the trackers to draw.
+    panels : list of (str, list of (name, label)[, list of (y, label)])
+        One panel per entry: its title, the trackers to draw and, optionally, horizontal
+        reference levels (m) drawn dashed.
     noisy : bool
         Draw the noisy error (thin) under the noise-free one (thick).
     """
@@ -358,7 +359,9 @@ def huang_track_figure(track: pd.DataFrame, panels: list, title: str = "", noisy
     with plt.rc_context(style):
         fig, axes = plt.subplots(len(panels), 1, layout="constrained", squeeze=False)
         t = track["t"].to_numpy()
-        for ax, (ptitle, names) in zip(axes[:, 0], panels, strict=True):
+        for ax, (ptitle, names, *refs) in zip(axes[:, 0], panels, strict=True):
+            for j, (y, label) in enumerate(refs[0] if refs else []):
+                ax.axhline(y, color=f"C{j + 5}", lw=1.0, ls="--", label=label)
             for i, (name, label) in enumerate(names):
                 if noisy:
                     ax.plot(t, track[f"err_{name}"], color=f"C{i}", lw=0.4, alpha=0.45)

@@ -7,6 +7,7 @@ from abglib.pipeline import log_to
 
 def main(input, output, params) -> None:
     from abglib import huang
+    from abglib.analysis import steady_state_lag_huang
     from abglib.plotting import (
         huang_bandwidth_figure,
         huang_thermal_figure,
@@ -44,6 +45,12 @@ def main(input, output, params) -> None:
     )
 
     trk = pd.read_csv(input.track)
+    accel = params.cfg["target"]["accel"]
+    gate = huang.C_LIGHT * radar["tau_s"] / 2.0 * params.cfg["gate_fraction_of_pulse"]
+
+    def lag(beta):
+        return steady_state_lag_huang(beta, accel, dt)
+
     f5 = sim["fig5_enbw_hz"]
     lo = sim["low_enbw_hz"]
     panels = [
@@ -53,6 +60,7 @@ def main(input, output, params) -> None:
                 ("ab_t2_10_printed", "α-β (0.098, 0.0025), ENBW 9.85 Hz"),
                 ("abg_t2_10", f"α-β-γ type II, true ENBW {f5:g} Hz"),
             ],
+            [(lag(0.0025), f"A/(βF_r²) = {lag(0.0025):.2f} m (the paper's 4.44 m)")],
         ),
         (
             "type II α-β-γ with the gains printed for 10 Hz: their true ENBW is 287 Hz",
@@ -63,6 +71,10 @@ def main(input, output, params) -> None:
             [
                 ("ab_t2_2_printed", "α-β (0.02, 0.0001), ENBW 1.90 Hz"),
                 ("abg_t2_2", f"α-β-γ type II, true ENBW {lo:g} Hz"),
+            ],
+            [
+                (lag(0.0001), f"A/(βF_r²) = {lag(0.0001):.1f} m (the paper's 111 m)"),
+                (gate, f"discriminator edge cτ/4 = {gate:.1f} m"),
             ],
         ),
     ]
