@@ -67,6 +67,20 @@ REPORT_CONTENT = {
             "responses",
         ],
     },
+    "alwagih": {
+        "figures": ["fig5_tracks", "fig6_tracks", "fig7_rmse", "fig8_rmse", "causal"],
+        "tables": [
+            "comparison",
+            "table1",
+            "table2",
+            "mc_rmse",
+            "tables34",
+            "ttests",
+            "tables56",
+            "consistency",
+            "causal",
+        ],
+    },
 }
 
 
