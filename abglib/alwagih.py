@@ -37,6 +37,7 @@ __all__ = [
     "printed_consistency",
     "rank_methods",
     "run_methods",
+    "sensitivity",
 ]
 
 #: The paper's five methods, then the causal M5 and the two Kalman designs (beyond it).
@@ -216,6 +217,38 @@ def paper_percentages(rmse_wide: pd.DataFrame) -> pd.DataFrame:
     for m in COMPARED:
         out[m] = methods.percentage_change(rmse_wide["M1"].to_numpy(), rmse_wide[m].to_numpy())
     return out
+
+
+def sensitivity(datasets_by_noise: Mapping, cfg: Mapping, alphas, windows) -> pd.DataFrame:
+    """How the paper's ranking depends on the settings it does not print.
+
+    For every ``alpha_0`` (used by M1 and as M4's start) and M4 window length: the Monte
+    Carlo mean RMSE of M1-M5 averaged over the experiments, per noise and coordinate, the
+    ranking, and whether the paper's conclusion "M5, then M4, then M3" holds.
+    """
+    rows = []
+    for a0 in alphas:
+        for w in windows:
+            c = dict(cfg)
+            c["m1_alpha"] = float(a0)
+            c["m4"] = dict(cfg["m4"], alpha0=float(a0), window=int(w))
+            table = compare_methods(datasets_by_noise, c)
+            table = table[table["method"].isin(PAPER_METHODS)]
+            means = table.groupby(["noise", "coord", "method"], sort=False)["rmse"].mean()
+            for (noise, coord), g in means.groupby(level=["noise", "coord"], sort=False):
+                m = {k[2]: float(v) for k, v in g.items()}
+                rows.append(
+                    {
+                        "alpha0": float(a0),
+                        "window": int(w),
+                        "noise": noise,
+                        "coord": coord,
+                        **m,
+                        "ranking": rank_methods(m),
+                        "M5_then_M4_then_M3": m["M5"] < m["M4"] < m["M3"],
+                    }
+                )
+    return pd.DataFrame(rows)
 
 
 def rank_methods(means: Mapping) -> str:

@@ -53,6 +53,7 @@ rule alwagih_reproduce:
         tables56="results/alwagih/tables56.csv",
         consistency="results/alwagih/consistency.csv",
         causal="results/alwagih/causal.csv",
+        sensitivity="results/alwagih/sensitivity.csv",
         tracks="results/alwagih/tracks.csv",
     log:
         "logs/alwagih/reproduce.log",

@@ -79,6 +79,7 @@ REPORT_CONTENT = {
             "tables56",
             "consistency",
             "causal",
+            "sensitivity",
         ],
     },
 }
