@@ -248,7 +248,16 @@ def sensitivity(datasets_by_noise: Mapping, cfg: Mapping, alphas, windows) -> pd
                         "M5_then_M4_then_M3": m["M5"] < m["M4"] < m["M3"],
                     }
                 )
-    return pd.DataFrame(rows)
+    columns = [
+        "alpha0",
+        "window",
+        "noise",
+        "coord",
+        *PAPER_METHODS,
+        "ranking",
+        "M5_then_M4_then_M3",
+    ]
+    return pd.DataFrame(rows, columns=columns)
 
 
 def rank_methods(means: Mapping) -> str:
