@@ -102,7 +102,8 @@ def mc_means(noise):
 #
 # **What does not.** (1) "M5 is the best, then M4, then M3" fails on these data with the
 # configured α₀ = 0.1 and M4 window of 10 samples (section 7: in Y it holds for a window of
-# 5, or α₀ ≥ 0.2; in X for one setting of the twelve tried, white noise only): in Y, M3
+# 5, or α₀ ≥ 0.2 except α₀ = 0.2 with window 20; in X for one setting of the twelve tried,
+# white noise only): in Y, M3
 # (α from eq 24a, β from eq 25) beats M4, as it does in the paper's *own* Y columns
 # (Tables 1–2: M3 ≈ 60–100 m, M4 ≈ 260–285 m); in X, M4 is worse than M3, and the
 # least-squares gains M2/M3 even beat M5 in four of the five experiments, because on a
