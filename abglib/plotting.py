@@ -330,7 +330,8 @@ def alwagih_causal(causal: pd.DataFrame, title=""):
             ax.set_ylabel("Monte Carlo mean RMSE (m)")
             ax.set_yscale("log")
             ax.set_title(f"{noise} noise")
-        axes[0].legend(loc="best")
+        handles, labels = axes[0].get_legend_handles_labels()
+        fig.legend(handles, labels, loc="lower center", ncol=len(cols))
         fig.suptitle(title)
-        fig.tight_layout()
+        fig.tight_layout(rect=(0, 0.07, 1, 1))
     return fig
