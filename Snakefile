@@ -9,6 +9,8 @@ include: "workflow/rules/common.smk"
 include: "workflow/rules/steelman1978.smk"
 include: "workflow/rules/faa_bendix.smk"
 include: "workflow/rules/huang.smk"
+include: "workflow/rules/datasets.smk"
+include: "workflow/rules/alwagih.smk"
 include: "workflow/rules/compare.smk"
 include: "workflow/rules/reports.smk"
 

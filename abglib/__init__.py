@@ -21,6 +21,12 @@ analysis
     measures, ENBW and frequency-domain features, each with a numeric twin.
 compare
     Published-versus-reproduced tables (``comparison.csv``) and the scorecard.
+datasets
+    Simulated radar datasets (seeded kinematics and noise; Parquet + manifest).
+methods
+    The gain-selection methods M1-M5 of seed 001 (and a causal M5), batched.
+alwagih
+    The seed 001 simulation study: RMSE tables 1-6, the paired t-test, printed-table checks.
 """
 
 from __future__ import annotations
@@ -36,10 +42,12 @@ __version__ = "0.1.0"
 __all__ = ["AbglibValueError", "Gains", "TrackResult", "__version__", "track"]
 
 _SUBMODULES = {
+    "alwagih",
     "analysis",
     "compare",
     "control",
     "conventions",
+    "datasets",
     "design",
     "methods",
     "plotting",

@@ -128,3 +128,20 @@ def test_huang_outputs(two_runs):
     )
     assert len(comp) == published
     assert (comp.loc[comp["verdict"] != "match", "note"].str.len() > 0).all()
+
+
+def test_datasets_and_alwagih_outputs(two_runs):
+    a, b = two_runs
+    names = [f"alwagih_{k}{i}" for k in "wc" for i in range(1, 6)]
+    for name in names:
+        for suffix in (".parquet", ".manifest.json"):
+            rel = Path("results/datasets") / f"{name}{suffix}"
+            assert (a / rel).is_file(), rel
+            # datasets are rebuilt byte for byte
+            assert (a / rel).read_bytes() == (b / rel).read_bytes(), rel
+    comp = pd.read_csv(a / "results/alwagih/comparison.csv", dtype=str, keep_default_na=False)
+    assert list(comp.columns) == COMPARISON_COLUMNS
+    assert set(comp["verdict"]) <= set(VERDICTS)
+    # every printed number of Tables 1-6 and every claim has a row
+    assert len(comp) == 184 + 76
+    assert (a / REPORTS / "alwagih" / "index.html").is_file()
