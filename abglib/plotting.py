@@ -16,10 +16,12 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 __all__ = [
+    "benchmark_heatmap",
     "frequency_response_figure",
     "response_grid",
     "save_figure",
     "stability_triangle",
+    "tradeoff_figure",
 ]
 
 # a fixed style so that a rebuild draws identical pixels whatever the user's matplotlibrc
@@ -232,4 +234,86 @@ def stability_triangle(table: pd.DataFrame, title: str = ""):
                 axis.legend(loc="upper right")
         if title:
             fig.suptitle(title, fontsize=9)
+    return fig
+
+
+# --------------------------------------------------------------------------- benchmark
+def benchmark_heatmap(league: pd.DataFrame, metric: str = "rmse_x_smooth", title: str = ""):
+    """Heatmap of one metric over the benchmark matrix (variants x scenarios).
+
+    Each column (scenario) is divided by its best (smallest) value, so colours compare
+    variants within a scenario; the cell text is that ratio. Diverged cells are grey and
+    marked ``div``.
+    """
+    from matplotlib.colors import LogNorm
+
+    piv = league.pivot(index="variant", columns="scenario", values=metric).astype(float)
+    div = league.pivot(index="variant", columns="scenario", values="diverged").astype(bool)
+    order = piv.div(piv.min(axis=0), axis=1).median(axis=1).sort_values().index
+    piv, div = piv.loc[order], div.loc[order]
+    ratio = piv.div(piv.min(axis=0), axis=1)
+    with plt.rc_context(_STYLE):
+        h = max(3.0, 0.32 * len(piv) + 1.8)
+        w = max(6.0, 0.55 * piv.shape[1] + 3.5)
+        fig, ax = plt.subplots(figsize=(w, h))
+        data = np.ma.masked_invalid(ratio.to_numpy())
+        cmap = plt.get_cmap("viridis_r").copy()
+        cmap.set_bad("0.8")
+        vmax = max(float(np.nanmax(ratio.to_numpy())) if data.count() else 2.0, 1.01)
+        im = ax.imshow(data, aspect="auto", cmap=cmap, norm=LogNorm(1.0, vmax))
+        for i in range(ratio.shape[0]):
+            for j in range(ratio.shape[1]):
+                v = ratio.iat[i, j]
+                text = "div" if div.iat[i, j] else ("" if not np.isfinite(v) else f"{v:.2g}")
+                ax.text(j, i, text, ha="center", va="center", fontsize=6, color="k")
+        ax.set_xticks(range(piv.shape[1]), piv.columns, rotation=60, ha="right")
+        ax.set_yticks(range(piv.shape[0]), piv.index)
+        ax.set_xlabel("scenario")
+        ax.set_ylabel("variant")
+        ax.grid(False)
+        fig.colorbar(im, ax=ax, label=f"{metric} / best in scenario (log scale)")
+        ax.set_title(title or f"{metric} across the benchmark matrix, relative to the best")
+        fig.tight_layout()
+    return fig
+
+
+def tradeoff_figure(points: pd.DataFrame, scenarios, title: str = ""):
+    """Noise versus lag per design family: one panel per scenario.
+
+    ``points``: :func:`abglib.benchmark.tradeoff_table` (``noise_rms``, ``lag_rms`` in
+    metres, ``family``, ``variant``). Variants of one family are joined in order of
+    increasing noise, so each family traces its trade-off curve.
+    """
+    scenarios = [s for s in scenarios if s in set(points["scenario"])]
+    fams = sorted(points["family"].unique())
+    colours = {f: plt.get_cmap("tab20")(i % 20) for i, f in enumerate(fams)}
+    n = max(len(scenarios), 1)
+    cols = min(n, 3)
+    rows = int(np.ceil(n / cols))
+    with plt.rc_context(_STYLE):
+        fig, axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.6 * rows + 1.2), squeeze=False)
+        for ax, sc in zip(axes.ravel(), scenarios, strict=False):
+            d = points[points["scenario"] == sc]
+            for f in fams:
+                e = d[d["family"] == f].sort_values("noise_rms")
+                if e.empty:
+                    continue
+                ax.plot(e["noise_rms"], e["lag_rms"].clip(lower=1e-6), "o-", ms=3.5,
+                        color=colours[f], label=f)
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_xlabel("RMS noise part of x̄ error (m)")
+            ax.set_ylabel("RMS lag part of x̄ error (m)")
+            ax.set_title(sc)
+        for ax in axes.ravel()[len(scenarios):]:
+            ax.set_visible(False)
+        handles, labels = axes.ravel()[0].get_legend_handles_labels()
+        seen = dict(zip(labels, handles, strict=True))
+        for ax in axes.ravel()[1 : len(scenarios)]:
+            for h_, l_ in zip(*ax.get_legend_handles_labels()[::-1], strict=True):
+                seen.setdefault(h_, l_)
+        fig.legend(list(seen.values()), list(seen.keys()), loc="lower center",
+                   ncol=min(4, len(seen)), fontsize=7)
+        fig.suptitle(title or "Noise versus lag of the smoothed position, per design family")
+        fig.tight_layout(rect=(0, 0.08 + 0.02 * (len(seen) // 4), 1, 1))
     return fig
