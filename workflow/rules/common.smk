@@ -86,6 +86,23 @@ def report_tables(doc):
     return [f"results/{doc}/{t}.csv" for t in REPORT_CONTENT[doc]["tables"]]
 
 
+# simulated radar datasets (datasets.smk): scenario name -> spec
+DATASET_SCENARIOS = config.get("datasets", {}).get("scenarios", {})
+
+
+def dataset_files(name):
+    """[parquet, manifest] of one dataset scenario (rule dataset, datasets.smk)."""
+    if name not in DATASET_SCENARIOS:
+        raise WorkflowError(
+            f"no dataset scenario {name!r} in config['datasets']['scenarios']; "
+            f"configured: {', '.join(sorted(DATASET_SCENARIOS)) or 'none'}"
+        )
+    return [
+        f"results/datasets/{name}.parquet",
+        f"results/datasets/{name}.manifest.json",
+    ]
+
+
 def all_targets():
     targets = [
         "results/scorecard.csv",
@@ -94,4 +111,6 @@ def all_targets():
     ]
     for doc in DOCS:
         targets.append(f"{REPORTS}/{doc}/index.html")
+    for name in DATASET_SCENARIOS:
+        targets.extend(dataset_files(name))
     return targets
