@@ -9,6 +9,7 @@ include: "workflow/rules/common.smk"
 include: "workflow/rules/steelman1978.smk"
 include: "workflow/rules/faa_bendix.smk"
 include: "workflow/rules/datasets.smk"
+include: "workflow/rules/benchmark.smk"
 include: "workflow/rules/compare.smk"
 include: "workflow/rules/reports.smk"
 
@@ -17,3 +18,4 @@ rule all:
     default_target: True
     input:
         all_targets(),
+        bench_targets(),
