@@ -7,7 +7,6 @@
 import re
 
 from abglib.benchmark import n_vrf_checks
-from abglib.metrics import fail_threshold
 from abglib.variants import variant_gains, variant_rule
 
 BENCH = config.get("benchmark", {})
@@ -55,11 +54,18 @@ def bench_mem_mb(wildcards):
     return 400 + (runs * n * 2 * 5 + chunk * n * 2 * 16) * 8 // 10**6
 
 
-def bench_threshold():
-    """Simultaneous |t| bound of the VRF build check (Bonferroni over the matrix)."""
-    runs = min(bench_runs(s) for s in BENCH_SCENARIOS)
+def _check_family_size():
+    """The Bonferroni bound assumes at most family_size VRF checks in the matrix."""
     n = n_vrf_checks(len(BENCH_VARIANTS), len(BENCH_SCENARIOS))
-    return fail_threshold(runs, n, float(BENCH["family_alpha"]))
+    if n > int(BENCH["family_size"]):
+        raise WorkflowError(
+            f"the benchmark matrix can hold {n} VRF checks, more than "
+            f"benchmark.family_size = {BENCH['family_size']}; raise family_size"
+        )
+
+
+if BENCH:
+    _check_family_size()
 
 
 def bench_cells():
@@ -97,12 +103,14 @@ rule benchmark_cell:
         spec=lambda wildcards: BENCH_VARIANTS[wildcards.variant],
         scenario_spec=lambda wildcards: DATASET_SCENARIOS[wildcards.scenario],
         runs=BENCH.get("runs"),
-        seed=lambda wildcards: int(BENCH["seed"]) + BENCH_SCENARIOS.index(wildcards.scenario),
+        seed=lambda wildcards: int(BENCH["seed"])
+        + int(DATASET_SCENARIOS[wildcards.scenario]["seed"]),
         burn_in=BENCH.get("burn_in"),
         init=BENCH.get("init"),
         ci_level=BENCH.get("ci_level"),
         chunk_runs=BENCH.get("chunk_runs"),
-        threshold=bench_threshold() if BENCH else None,
+        family_alpha=BENCH.get("family_alpha"),
+        family_size=BENCH.get("family_size"),
         digits=config["significant_digits"],
     script:
         "../scripts/benchmark_cell.py"
@@ -130,7 +138,8 @@ rule benchmark_league:
         runtime=10,
     params:
         variants=BENCH_VARIANTS,
-        threshold=bench_threshold() if BENCH else None,
+        family_alpha=BENCH.get("family_alpha"),
+        family_size=BENCH.get("family_size"),
         rank_by=BENCH.get("rank_by"),
         digits=config["significant_digits"],
     script:

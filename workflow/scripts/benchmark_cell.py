@@ -1,10 +1,12 @@
 """One benchmark cell: a tracker variant on a dataset scenario -> per-coordinate metrics.
 
 Reads the scenario's Parquet dataset (or, when ``benchmark.runs`` overrides the Monte
-Carlo size, regenerates the scenario with that many runs from its spec and the cell's
-seed), runs :func:`abglib.benchmark.run_cell`, writes the CSV, then applies the VRF build
-check (:func:`abglib.benchmark.check_cell`): a failure raises after the CSV is written
-to a temporary name only, so the job fails and no output is left behind.
+Carlo size, regenerates the scenario with that many runs from its spec, with the seed
+``benchmark.seed + <scenario seed>``), runs :func:`abglib.benchmark.run_cell`, applies the VRF build check
+(:func:`abglib.benchmark.check_cell`; Bonferroni over ``benchmark.family_size`` checks,
+which depends on nothing but the config constants and this cell's runs, so adding a
+variant reruns no other cell) and only then writes the CSV: a failing check fails the
+job and leaves no output.
 """
 
 import pandas as pd
@@ -37,11 +39,14 @@ def cell_table(dataset, variant, params) -> pd.DataFrame:
 def main(input, output, params, wildcards, logger) -> None:
     from abglib.benchmark import check_cell
     from abglib.compare import write_csv
+    from abglib.metrics import fail_threshold
 
     ds = load(input.parquet, wildcards.scenario, params.scenario_spec, params.runs, params.seed)
     logger.info("%s on %s: %d runs x %d samples", wildcards.variant, ds.name, ds.runs, ds.n_samples)
     cell = cell_table(ds, wildcards.variant, params)
-    check_cell(cell, float(params.threshold))
+    threshold = fail_threshold(ds.runs, int(params.family_size), float(params.family_alpha))
+    logger.info("VRF build check: |t| <= %.3f", threshold)
+    check_cell(cell, threshold)
     write_csv(cell, output.cell, params.digits)
 
 

@@ -29,9 +29,13 @@ def main(input, output, params) -> None:
     from abglib.benchmark import league_table, tradeoff_table
     from abglib.compare import write_csv
 
+    from abglib.metrics import fail_threshold
+
     cells = [pd.read_csv(p) for p in input.cells]
+    runs = min(int(c["runs"].iloc[0]) for c in cells)
+    threshold = fail_threshold(runs, int(params.family_size), float(params.family_alpha))
     d = params.digits
-    write_csv(league_table(cells, float(params.threshold), params.rank_by), output.league, d)
+    write_csv(league_table(cells, threshold, params.rank_by), output.league, d)
     write_csv(pd.concat(cells, ignore_index=True), output.cells, d)
     write_csv(tradeoff_table(cells), output.tradeoff, d)
     write_csv(variants_table(params.variants), output.variants, d)
