@@ -117,7 +117,9 @@ def coloured_vrf(gains: Gains, rho: float, dt: float = 1.0) -> dict:
     Pp = ss.Phi @ P @ ss.Phi.T
     p, pp = np.diag(P), np.diag(Pp)
     if n == 2:
-        return dict(x_smooth=p[0], v_smooth=p[1], a_smooth=0.0, x_pred=pp[0], v_pred=pp[1], a_pred=0.0)
+        return dict(
+            x_smooth=p[0], v_smooth=p[1], a_smooth=0.0, x_pred=pp[0], v_pred=pp[1], a_pred=0.0
+        )
     return dict(
         x_smooth=p[0], v_smooth=p[1], a_smooth=p[2], x_pred=pp[0], v_pred=pp[1], a_pred=pp[2]
     )

@@ -131,7 +131,6 @@ def _filterpy_rows(label, g: Gains, dt: float, rtol: float, seed: int) -> list[d
         GHFilter,
         GHKFilter,
         benedict_bornder_constants,
-        critical_damping_parameters,
     )
 
     rows = []
@@ -164,64 +163,119 @@ def _filterpy_rows(label, g: Gains, dt: float, rtol: float, seed: int) -> list[d
         f = GHFilter(x=0.0, dx=0.0, dt=dt, g=fg, h=fh)
         res = f.batch_filter(z)[1:]
         rows.append(
-            _row("FilterPy", "GHFilter.batch_filter", label, "x_smooth, v_smooth track",
-                 np.r_[ref.x_smooth, ref.v_smooth], np.r_[res[:, 0], res[:, 1]], rtol)
+            _row(
+                "FilterPy",
+                "GHFilter.batch_filter",
+                label,
+                "x_smooth, v_smooth track",
+                np.r_[ref.x_smooth, ref.v_smooth],
+                np.r_[res[:, 0], res[:, 1]],
+                rtol,
+            )
         )
         vx, vdx = f.VRF()
         rows.append(vrf_row("GHFilter.VRF()[0]", "VRF x_smooth", "x_smooth", vx))
         rows.append(vrf_row("GHFilter.VRF()[1]", "VRF v_smooth (1/s²)", "v_smooth", vdx))
-        rows.append(vrf_row("GHFilter.VRF_prediction()", "VRF x_pred", "x_pred", f.VRF_prediction()))
+        rows.append(
+            vrf_row("GHFilter.VRF_prediction()", "VRF x_pred", "x_pred", f.VRF_prediction())
+        )
         bb = benedict_bornder_constants(fg)
         ref_bb = design.benedict_bordner(fg) if fg <= 1 else None
         if ref_bb is not None:
             rows.append(
-                _row("FilterPy", "benedict_bornder_constants(g)", label, "β of Benedict-Bordner",
-                     ref_bb.beta, bb[1], rtol)
+                _row(
+                    "FilterPy",
+                    "benedict_bornder_constants(g)",
+                    label,
+                    "β of Benedict-Bordner",
+                    ref_bb.beta,
+                    bb[1],
+                    rtol,
+                )
             )
         return rows
 
     f = GHKFilter(x=0.0, dx=0.0, ddx=0.0, dt=dt, g=fg, h=fh, k=fk)
     xs = np.array([f.update(zi)[0] for zi in z])
     rows.append(
-        _row("FilterPy", "GHKFilter.update (per sample)", label, "x_smooth track",
-             ref.x_smooth, xs, rtol)
+        _row(
+            "FilterPy",
+            "GHKFilter.update (per sample)",
+            label,
+            "x_smooth track",
+            ref.x_smooth,
+            xs,
+            rtol,
+        )
     )
     fb = GHKFilter(x=0.0, dx=0.0, ddx=0.0, dt=dt, g=fg, h=fh, k=fk).batch_filter(z)[1:, 0]
     ab = track(z, Gains(g.alpha, g.beta, 0.0), dt=dt).x_smooth
     rows.append(
-        _row("FilterPy", "GHKFilter.batch_filter", label, "x_smooth track", ref.x_smooth, fb,
-             rtol, route="abglib.track with the same α, β and γ = 0", independent=_rel(fb, ab),
-             supports="abglib",
-             explanation=("batch_filter ignores k: its output equals the α-β tracker with the "
-                          f"same g, h to {_rel(fb, ab):.1e} relative (independent_value)"))
+        _row(
+            "FilterPy",
+            "GHKFilter.batch_filter",
+            label,
+            "x_smooth track",
+            ref.x_smooth,
+            fb,
+            rtol,
+            route="abglib.track with the same α, β and γ = 0",
+            independent=_rel(fb, ab),
+            supports="abglib",
+            explanation=(
+                "batch_filter ignores k: its output equals the α-β tracker with the "
+                f"same g, h to {_rel(fb, ab):.1e} relative (independent_value)"
+            ),
+        )
     )
     vx, vdx, vddx = f.VRF()
     h4, ghk = 4 - 2 * fg - fh, fg * fh + fg * fk - 2 * fk
     num_x = 2 * fh * (2 * fg**2 + 2 * fh - 3 * fg * fh) - 2 * fg * fk * h4
-    rows.append(vrf_row(
-        "GHKFilter.VRF()[0]", "VRF x_smooth", "x_smooth", vx,
-        alternative=num_x / (2 * h4 * ghk),
-        explanation=("FilterPy divides by 2k − g(h+k)·(4−2g−h) (precedence) and drops a factor "
-                     "2: the same numerator over 2(4−2g−h)(gh+gk−2k) (alternative) equals abglib; "
-                     "FilterPy's value can be negative, impossible for a variance"),
-    ))
+    rows.append(
+        vrf_row(
+            "GHKFilter.VRF()[0]",
+            "VRF x_smooth",
+            "x_smooth",
+            vx,
+            alternative=num_x / (2 * h4 * ghk),
+            explanation=(
+                "FilterPy divides by 2k − g(h+k)·(4−2g−h) (precedence) and drops a factor "
+                "2: the same numerator over 2(4−2g−h)(gh+gk−2k) (alternative) equals abglib; "
+                "FilterPy's value can be negative, impossible for a variance"
+            ),
+        )
+    )
     num_dx = 2 * fh**3 - 4 * fh**2 * fk + 4 * fk**2 * (2 - fg)
-    rows.append(vrf_row(
-        "GHKFilter.VRF()[1]", "VRF v_smooth (1/s²)", "v_smooth", vdx,
-        alternative=num_dx / (h4 * ghk) / dt**2,
-        explanation=("FilterPy's denominator has a spurious factor 2 and no dt²: "
-                     "(2h³−4h²k+4k²(2−g)) / ((4−2g−h)(gh+gk−2k)) / dt² (alternative) equals "
-                     "abglib"),
-    ))
+    rows.append(
+        vrf_row(
+            "GHKFilter.VRF()[1]",
+            "VRF v_smooth (1/s²)",
+            "v_smooth",
+            vdx,
+            alternative=num_dx / (h4 * ghk) / dt**2,
+            explanation=(
+                "FilterPy's denominator has a spurious factor 2 and no dt²: "
+                "(2h³−4h²k+4k²(2−g)) / ((4−2g−h)(gh+gk−2k)) / dt² (alternative) equals "
+                "abglib"
+            ),
+        )
+    )
     rows.append(vrf_row("GHKFilter.VRF()[2]", "VRF a_smooth (1/s⁴)", "a_smooth", vddx))
     gh2 = 2 * fg + fh
-    rows.append(vrf_row(
-        "GHKFilter.VRF_prediction()", "VRF x_pred", "x_pred", f.VRF_prediction(),
-        alternative=(fg * fk * (gh2 - 4) + fh * (fg * gh2 + 2 * fh))
-        / ((2 * fk - fg * (fh + fk)) * (gh2 - 4)),
-        explanation=("operator precedence: FilterPy computes 2k − (g(h+k)(2g+h−4)); the "
-                     "denominator (2k − g(h+k))·(2g+h−4) (alternative) equals abglib"),
-    ))
+    rows.append(
+        vrf_row(
+            "GHKFilter.VRF_prediction()",
+            "VRF x_pred",
+            "x_pred",
+            f.VRF_prediction(),
+            alternative=(fg * fk * (gh2 - 4) + fh * (fg * gh2 + 2 * fh))
+            / ((2 * fk - fg * (fh + fk)) * (gh2 - 4)),
+            explanation=(
+                "operator precedence: FilterPy computes 2k − (g(h+k)(2g+h−4)); the "
+                "denominator (2k − g(h+k))·(2g+h−4) (alternative) equals abglib"
+            ),
+        )
+    )
     # bias error for a constant jerk J: FilterPy's is estimate - truth of the prediction
     J = 1.0
     lag = steady_state_lag(g, dt, kind="jerk", magnitude=J, output="x_pred")
@@ -229,10 +283,18 @@ def _filterpy_rows(label, g: Gains, dt: float, rtol: float, seed: int) -> list[d
     sim = track(J * t**3 / 6.0, g, dt=dt).x_pred
     sim_bias = float(sim[-1] - J * t[-1] ** 3 / 6.0)
     rows.append(
-        _row("FilterPy", "GHKFilter.bias_error(dddx=1)", label,
-             "steady-state prediction bias for unit jerk (estimate − truth)", -lag,
-             f.bias_error(J), rtol, route="simulated track of J t³/6 (last sample)",
-             independent=sim_bias, supports=_settle(-lag, f.bias_error(J), sim_bias, 1e-9))
+        _row(
+            "FilterPy",
+            "GHKFilter.bias_error(dddx=1)",
+            label,
+            "steady-state prediction bias for unit jerk (estimate − truth)",
+            -lag,
+            f.bias_error(J),
+            rtol,
+            route="simulated track of J t³/6 (last sample)",
+            independent=sim_bias,
+            supports=_settle(-lag, f.bias_error(J), sim_bias, 1e-9),
+        )
     )
     return rows
 
@@ -251,30 +313,52 @@ def _helper_rows(rtol: float) -> list[dict]:
         for order, ours in ((2, design.standard_ab(th)), (3, design.standard_abg(th))):
             theirs = from_filterpy(*critical_damping_parameters(th, order))
             rows.append(
-                _row("FilterPy", f"critical_damping_parameters({th}, order={order})",
-                     f"θ={th}", "(α, β, γ) with k → γ = 2k", np.array(list(ours)),
-                     np.array(list(theirs)), rtol)
+                _row(
+                    "FilterPy",
+                    f"critical_damping_parameters({th}, order={order})",
+                    f"θ={th}",
+                    "(α, β, γ) with k → γ = 2k",
+                    np.array(list(ours)),
+                    np.array(list(theirs)),
+                    rtol,
+                )
             )
     n = np.arange(1, 50)
     gm = design.growing_memory(len(n))
     ls = np.array([least_squares_parameters(int(k) - 1) for k in n])
     rows.append(
-        _row("FilterPy", "least_squares_parameters(n), n = 0..48", "growing memory",
-             "(g_n, h_n) vs growing_memory n+1 (seed 001, eqs 24a-b)",
-             np.r_[gm.alpha, gm.beta], np.r_[ls[:, 0], ls[:, 1]], rtol)
+        _row(
+            "FilterPy",
+            "least_squares_parameters(n), n = 0..48",
+            "growing memory",
+            "(g_n, h_n) vs growing_memory n+1 (seed 001, eqs 24a-b)",
+            np.r_[gm.alpha, gm.beta],
+            np.r_[ls[:, 0], ls[:, 1]],
+            rtol,
+        )
     )
     for g in (0.3, 0.8):
         _, h = benedict_bornder_constants(g, critical=True)
         p = poles(Gains(g, h))
         crit = design.standard_from_alpha(g, 2).beta
         rows.append(
-            _row("FilterPy", f"benedict_bornder_constants({g}, critical=True)", f"g={g}",
-                 "β 'nearly critically damped' vs critically damped β at the same α",
-                 crit, h, rtol, route="poles of the tracker (abglib.analysis.poles)",
-                 independent=float(np.max(np.abs(np.imag(p)))), supports="not comparable",
-                 explanation=("a different rule (Brookner 0.8·(2−g²−2√(1−g²))/g²), not "
-                              "critical damping: independent_value is the largest |Im| of "
-                              "its poles (0 would be critically or over-damped)"))
+            _row(
+                "FilterPy",
+                f"benedict_bornder_constants({g}, critical=True)",
+                f"g={g}",
+                "β 'nearly critically damped' vs critically damped β at the same α",
+                crit,
+                h,
+                rtol,
+                route="poles of the tracker (abglib.analysis.poles)",
+                independent=float(np.max(np.abs(np.imag(p)))),
+                supports="not comparable",
+                explanation=(
+                    "a different rule (Brookner 0.8·(2−g²−2√(1−g²))/g²), not "
+                    "critical damping: independent_value is the largest |Im| of "
+                    "its poles (0 would be critically or over-damped)"
+                ),
+            )
         )
     return rows
 
@@ -288,17 +372,44 @@ def _frequency_rows(label, g: Gains, dt: float, rtol: float) -> list[dict]:
         ours = frequency_response(g, o, wT, dt)
         num, den = transfer_function(g, o, dt)
         _, h_sp = scipy.signal.freqz(num, den, worN=wT)
-        rows.append(_row("scipy.signal", "freqz", label, f"H(e^jωT) of {o}, 257 ωT in [0, π]",
-                         ours, h_sp, rtol))
+        rows.append(
+            _row(
+                "scipy.signal",
+                "freqz",
+                label,
+                f"H(e^jωT) of {o}, 257 ωT in [0, π]",
+                ours,
+                h_sp,
+                rtol,
+            )
+        )
         sys = control.TransferFunction(num, den, dt)
         h_ct = np.asarray(sys(np.exp(1j * wT)))
-        rows.append(_row("python-control", "TransferFunction(num, den, dt)(e^jωT)", label,
-                         f"H(e^jωT) of {o}", ours, h_ct, rtol))
+        rows.append(
+            _row(
+                "python-control",
+                "TransferFunction(num, den, dt)(e^jωT)",
+                label,
+                f"H(e^jωT) of {o}",
+                ours,
+                h_ct,
+                rtol,
+            )
+        )
     ss = state_space(g, dt)
     P = np.asarray(control.dlyap(ss.F, np.outer(ss.K, ss.K)))
     v = vrf(g, dt)
-    rows.append(_row("python-control", "dlyap(F, K Kᵀ)", label, "VRF x_smooth, v_smooth",
-                     np.array([v["x_smooth"], v["v_smooth"]]), np.diag(P)[:2], rtol))
+    rows.append(
+        _row(
+            "python-control",
+            "dlyap(F, K Kᵀ)",
+            label,
+            "VRF x_smooth, v_smooth",
+            np.array([v["x_smooth"], v["v_smooth"]]),
+            np.diag(P)[:2],
+            rtol,
+        )
+    )
     return rows
 
 

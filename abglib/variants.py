@@ -148,7 +148,14 @@ for _rule in (
         lambda p: "standard (critically damped)" + _order_suffix(p),
         source="seed 000, eqs 22-24 inverted for theta",
     ),
-    Rule("qd_m", lambda p, dt, n: design.qd(p["m"]), ("m",), {}, "QD α-β-γ", source="seed 000, eqs 28-30"),
+    Rule(
+        "qd_m",
+        lambda p, dt, n: design.qd(p["m"]),
+        ("m",),
+        {},
+        "QD α-β-γ",
+        source="seed 000, eqs 28-30",
+    ),
     Rule(
         "qd_alpha",
         lambda p, dt, n: design.qd(design.qd_m_from_alpha(p["alpha"])),
@@ -280,8 +287,7 @@ def variant_rule(spec: Mapping, name: str = "variant") -> tuple[Rule, dict]:
             continue
         if v is not None and (isinstance(v, bool) or not isinstance(v, numbers.Real)):
             raise AbglibValueError(
-                f"variant {name!r}: parameter {k} of rule {rule_name!r} must be a number, "
-                f"got {v!r}"
+                f"variant {name!r}: parameter {k} of rule {rule_name!r} must be a number, got {v!r}"
             )
     full = dict(rule.optional)
     full.update(params)

@@ -165,7 +165,9 @@ for o in ("x_smooth", "x_pred", "v_smooth", "v_pred"):
         )
 vrf_table = pd.DataFrame(rows)
 if len(vrf_table):
-    inside = ((vrf_table["lo95"] <= vrf_table["exact"]) & (vrf_table["exact"] <= vrf_table["hi95"])).mean()
+    inside = (
+        (vrf_table["lo95"] <= vrf_table["exact"]) & (vrf_table["exact"] <= vrf_table["hi95"])
+    ).mean()
     display(
         Markdown(
             f"{len(vrf_table)} checks; the exact VRF lies inside the 95 % interval in "
@@ -194,8 +196,20 @@ display(
     )
 )
 display(
-    peers.loc[~agree, ["function", "gains", "abglib", "peer_value", "rel_diff", "independent_value",
-                       "supports", "alternative_rel_diff", "explanation"]].reset_index(drop=True)
+    peers.loc[
+        ~agree,
+        [
+            "function",
+            "gains",
+            "abglib",
+            "peer_value",
+            "rel_diff",
+            "independent_value",
+            "supports",
+            "alternative_rel_diff",
+            "explanation",
+        ],
+    ].reset_index(drop=True)
 )
 
 # %% [markdown]

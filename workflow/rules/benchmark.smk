@@ -90,11 +90,11 @@ rule benchmark_cell:
         "logs/benchmark/cells/{variant}/{scenario}.log",
     benchmark:
         "benchmarks/results/benchmark/cells/{variant}/{scenario}.tsv"
-    conda:
-        "../envs/abglib.yaml"
     wildcard_constraints:
         variant="|".join(map(re.escape, BENCH_VARIANTS)) or "no-variants-configured",
         scenario="|".join(map(re.escape, BENCH_SCENARIOS)) or "no-scenarios-configured",
+    conda:
+        "../envs/abglib.yaml"
     threads: 1
     resources:
         mem_mb=bench_mem_mb,
@@ -238,7 +238,9 @@ rule benchmark_report:
         ],
     output:
         html=f"{REPORTS}/benchmark/index.html",
-        figures=expand(f"{REPORTS}/benchmark/figures/{{f}}.png", f=["heatmap", "tradeoff"]),
+        figures=expand(
+            f"{REPORTS}/benchmark/figures/{{f}}.png", f=["heatmap", "tradeoff"]
+        ),
         tables=expand(
             f"{REPORTS}/benchmark/tables/{{t}}.csv",
             t=["league", "cells", "tradeoff", "variants", "peers", "engine_speed"],

@@ -28,7 +28,6 @@ def variants_table(specs) -> pd.DataFrame:
 def main(input, output, params) -> None:
     from abglib.benchmark import league_table, tradeoff_table
     from abglib.compare import write_csv
-
     from abglib.metrics import fail_threshold
 
     cells = [pd.read_csv(p) for p in input.cells]
