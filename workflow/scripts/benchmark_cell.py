@@ -4,9 +4,9 @@ Reads the scenario's Parquet dataset (or, when ``benchmark.runs`` overrides the 
 Carlo size, regenerates the scenario with that many runs from its spec, with the seed
 ``benchmark.seed + <scenario seed>``), runs :func:`abglib.benchmark.run_cell`, applies
 the VRF build check (:func:`abglib.benchmark.check_cell`; Bonferroni over
-``benchmark.family_size`` checks, which depends on nothing but the config constants and this cell's runs, so adding a
-variant reruns no other cell) and only then writes the CSV: a failing check fails the
-job and leaves no output.
+``benchmark.family_size`` checks, which depends on nothing but the config constants and
+this cell's runs, so adding a variant reruns no other cell) and only then writes the
+CSV: a failing check fails the job and leaves no output.
 """
 
 import pandas as pd
