@@ -19,7 +19,14 @@ import pandas as pd
 from . import metrics, variants
 from ._checks import AbglibValueError
 
-__all__ = ["check_cell", "league_table", "n_vrf_checks", "run_cell", "tradeoff_table"]
+__all__ = [
+    "check_cell",
+    "league_table",
+    "n_vrf_checks",
+    "run_cell",
+    "tradeoff_sweep",
+    "tradeoff_table",
+]
 
 #: Columns of the league table, in order (the metrics are those of the ``all`` row).
 LEAGUE_COLUMNS = (
@@ -211,4 +218,61 @@ def tradeoff_table(cells: Sequence[pd.DataFrame], output: str = "x_smooth") -> p
         )
     return pd.DataFrame(
         rows, columns=["scenario", "variant", "family", "output", "noise_rms", "lag_rms", "rmse"]
+    )
+
+
+def tradeoff_sweep(
+    datasets: Sequence, families: Mapping, *, burn_in: int = 10, init: str = "two_point"
+) -> pd.DataFrame:
+    """Noise-versus-lag curves: each design family swept over its parameter.
+
+    Parameters
+    ----------
+    datasets : sequence of abglib.datasets.Dataset
+        The scenarios of the trade-off figure.
+    families : mapping
+        ``label -> {rule: ..., <fixed parameters>, sweep: {<parameter>: [values]}}``; each
+        value of the swept parameter is one variant (:mod:`abglib.variants`).
+    burn_in, init
+        As :func:`run_cell`.
+
+    Returns
+    -------
+    DataFrame
+        ``scenario, family, parameter, value, noise_rms, lag_rms, rmse`` of the smoothed
+        position (``all`` row), one row per (scenario, family, value); points where the
+        rule cannot realise the value for the scenario's ``dt`` are skipped.
+    """
+    rows = []
+    for label, fam in families.items():
+        fam = dict(fam)
+        sweep = fam.pop("sweep", None)
+        if not isinstance(sweep, Mapping) or len(sweep) != 1:
+            raise AbglibValueError(
+                f"trade-off family {label!r} needs sweep: {{<parameter>: [values]}}, got {sweep!r}"
+            )
+        ((param, values),) = sweep.items()
+        for ds in datasets:
+            for v in values:
+                spec = {**fam, param: v}
+                try:
+                    cell = run_cell(ds, spec, f"{label} {param}={v}", burn_in=burn_in, init=init)
+                except AbglibValueError:
+                    continue
+                rec = cell[cell["coord"] == "all"].iloc[0]
+                if bool(rec["diverged"]) or pd.isna(rec["noise_rms_x_smooth"]):
+                    continue
+                rows.append(
+                    {
+                        "scenario": ds.name,
+                        "family": label,
+                        "parameter": param,
+                        "value": float(v),
+                        "noise_rms": float(rec["noise_rms_x_smooth"]),
+                        "lag_rms": float(rec["lag_rms_x_smooth"]),
+                        "rmse": float(rec["rmse_x_smooth"]),
+                    }
+                )
+    return pd.DataFrame(
+        rows, columns=["scenario", "family", "parameter", "value", "noise_rms", "lag_rms", "rmse"]
     )

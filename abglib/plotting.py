@@ -277,43 +277,75 @@ def benchmark_heatmap(league: pd.DataFrame, metric: str = "rmse_x_smooth", title
     return fig
 
 
-def tradeoff_figure(points: pd.DataFrame, scenarios, title: str = ""):
-    """Noise versus lag per design family: one panel per scenario.
+def tradeoff_figure(curves: pd.DataFrame, points: pd.DataFrame, scenarios, title: str = ""):
+    """Noise versus lag of the smoothed position per design family, one panel per scenario.
 
-    ``points``: :func:`abglib.benchmark.tradeoff_table` (``noise_rms``, ``lag_rms`` in
-    metres, ``family``, ``variant``). Variants of one family are joined in order of
-    increasing noise, so each family traces its trade-off curve.
+    ``curves``: :func:`abglib.benchmark.tradeoff_sweep` (each family swept over its
+    parameter, joined in order of the parameter); ``points``:
+    :func:`abglib.benchmark.tradeoff_table` (the configured variants, drawn as labelled
+    markers). Both axes in metres, log scale.
     """
-    scenarios = [s for s in scenarios if s in set(points["scenario"])]
-    fams = sorted(points["family"].unique())
-    colours = {f: plt.get_cmap("tab20")(i % 20) for i, f in enumerate(fams)}
+    scenarios = [s for s in scenarios if s in set(curves["scenario"]) | set(points["scenario"])]
+    fams = list(dict.fromkeys(curves["family"]))
+    colours = {f: plt.get_cmap("tab10")(i % 10) for i, f in enumerate(fams)}
     n = max(len(scenarios), 1)
     cols = min(n, 3)
     rows = int(np.ceil(n / cols))
     with plt.rc_context(_STYLE):
-        fig, axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.6 * rows + 1.2), squeeze=False)
+        fig, axes = plt.subplots(rows, cols, figsize=(4.4 * cols, 3.8 * rows + 1.0), squeeze=False)
         for ax, sc in zip(axes.ravel(), scenarios, strict=False):
-            d = points[points["scenario"] == sc]
+            d = curves[curves["scenario"] == sc]
             for f in fams:
-                e = d[d["family"] == f].sort_values("noise_rms")
+                e = d[d["family"] == f].sort_values("value")
                 if e.empty:
                     continue
-                ax.plot(e["noise_rms"], e["lag_rms"].clip(lower=1e-6), "o-", ms=3.5,
-                        color=colours[f], label=f)
+                ax.plot(
+                    e["noise_rms"],
+                    e["lag_rms"].clip(lower=1e-3),
+                    ".-",
+                    ms=4,
+                    color=colours[f],
+                    label=f,
+                )
+            p = points[points["scenario"] == sc]
+            ax.plot(
+                p["noise_rms"],
+                p["lag_rms"].clip(lower=1e-3),
+                "kx",
+                ms=5,
+                label="configured variants",
+            )
+            for r in p.itertuples():
+                ax.annotate(
+                    r.variant,
+                    (r.noise_rms, max(r.lag_rms, 1e-3)),
+                    fontsize=5,
+                    xytext=(2, 2),
+                    textcoords="offset points",
+                )
             ax.set_xscale("log")
             ax.set_yscale("log")
             ax.set_xlabel("RMS noise part of x̄ error (m)")
             ax.set_ylabel("RMS lag part of x̄ error (m)")
             ax.set_title(sc)
-        for ax in axes.ravel()[len(scenarios):]:
+        for ax in axes.ravel()[len(scenarios) :]:
             ax.set_visible(False)
-        handles, labels = axes.ravel()[0].get_legend_handles_labels()
-        seen = dict(zip(labels, handles, strict=True))
-        for ax in axes.ravel()[1 : len(scenarios)]:
-            for h_, l_ in zip(*ax.get_legend_handles_labels()[::-1], strict=True):
-                seen.setdefault(h_, l_)
-        fig.legend(list(seen.values()), list(seen.keys()), loc="lower center",
-                   ncol=min(4, len(seen)), fontsize=7)
-        fig.suptitle(title or "Noise versus lag of the smoothed position, per design family")
-        fig.tight_layout(rect=(0, 0.08 + 0.02 * (len(seen) // 4), 1, 1))
+        handles, labels = {}, []
+        for ax in axes.ravel()[: len(scenarios)]:
+            for h_, l_ in zip(*ax.get_legend_handles_labels(), strict=True):
+                handles.setdefault(l_, h_)
+        labels = list(handles)
+        fig.legend(
+            [handles[k] for k in labels],
+            labels,
+            loc="lower center",
+            ncol=min(4, len(labels)),
+            fontsize=7,
+        )
+        fig.suptitle(
+            title
+            or "Noise versus lag of the smoothed position: each family swept "
+            "over its design parameter"
+        )
+        fig.tight_layout(rect=(0, 0.06 + 0.025 * (len(labels) // 4), 1, 1))
     return fig

@@ -31,7 +31,7 @@ version = "dev"
 figures = {f: f"results/benchmark/figures/{f}.png" for f in ("heatmap", "tradeoff")}
 tables = {
     t: f"results/benchmark/{t}.csv"
-    for t in ("league", "cells", "tradeoff", "variants", "peers", "engine_speed")
+    for t in ("league", "cells", "tradeoff", "tradeoff_curves", "variants", "peers", "engine_speed")
 }
 provenance = None
 
@@ -129,9 +129,11 @@ display(Image(filename=figures["heatmap"]))
 # %% [markdown]
 # ## Noise versus lag, per design family
 #
-# For each variant the RMS of the noise part and of the lag part of the smoothed-position
-# error. Along one family (connected points) lighter smoothing buys lag with noise; families
-# whose curves lie lower-left dominate on that scenario.
+# The RMS of the noise part and of the lag part of the smoothed-position error. Each design
+# family is swept over its design parameter (`benchmark.tradeoff_families`, table
+# `tradeoff_curves.csv`): along a curve lighter smoothing trades lag for noise; a family
+# whose curve lies lower-left dominates on that scenario. Crosses are the configured
+# variants of the league table.
 
 # %%
 display(Image(filename=figures["tradeoff"]))

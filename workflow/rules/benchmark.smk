@@ -146,10 +146,35 @@ rule benchmark_league:
         "../scripts/benchmark_league.py"
 
 
+rule benchmark_tradeoff:
+    input:
+        parquets=lambda wildcards: [
+            dataset_files(s)[0] for s in BENCH.get("tradeoff_scenarios", [])
+        ],
+    output:
+        curves="results/benchmark/tradeoff_curves.csv",
+    log:
+        "logs/benchmark/tradeoff.log",
+    conda:
+        "../envs/abglib.yaml"
+    threads: 1
+    resources:
+        mem_mb=2000,
+        runtime=20,
+    params:
+        families=BENCH.get("tradeoff_families"),
+        burn_in=BENCH.get("burn_in"),
+        init=BENCH.get("init"),
+        digits=config["significant_digits"],
+    script:
+        "../scripts/benchmark_tradeoff.py"
+
+
 rule benchmark_figures:
     input:
         league="results/benchmark/league.csv",
         tradeoff="results/benchmark/tradeoff.csv",
+        curves="results/benchmark/tradeoff_curves.csv",
     output:
         heatmap=report(
             "results/benchmark/figures/heatmap.png",
@@ -232,6 +257,7 @@ rule benchmark_report:
             "results/benchmark/league.csv",
             "results/benchmark/cells.csv",
             "results/benchmark/tradeoff.csv",
+            "results/benchmark/tradeoff_curves.csv",
             "results/benchmark/variants.csv",
             "results/benchmark/peers.csv",
             "results/benchmark/engine_speed.csv",
@@ -243,7 +269,15 @@ rule benchmark_report:
         ),
         tables=expand(
             f"{REPORTS}/benchmark/tables/{{t}}.csv",
-            t=["league", "cells", "tradeoff", "variants", "peers", "engine_speed"],
+            t=[
+                "league",
+                "cells",
+                "tradeoff",
+                "tradeoff_curves",
+                "variants",
+                "peers",
+                "engine_speed",
+            ],
         ),
     log:
         "logs/reports/benchmark.log",

@@ -11,7 +11,9 @@ def main(input, output, params) -> None:
     league = pd.read_csv(input.league)
     save_figure(benchmark_heatmap(league, params.rank_by), output.heatmap, params.dpi)
     points = pd.read_csv(input.tradeoff)
-    save_figure(tradeoff_figure(points, params.tradeoff_scenarios), output.tradeoff, params.dpi)
+    curves = pd.read_csv(input.curves)
+    fig = tradeoff_figure(curves, points, params.tradeoff_scenarios)
+    save_figure(fig, output.tradeoff, params.dpi)
 
 
 if "snakemake" in globals():
