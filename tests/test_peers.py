@@ -13,7 +13,7 @@ def table():
     return agreement_table(rtol=1e-9, seed=1)
 
 
-# the disagreements found (filterpy 1.4.5 / gh_filter.py), each settled for abglib
+# the disagreements found (filterpy 2.0.0, filterpy/gh/gh_filter.py), each settled for abglib
 KNOWN = {
     "GHKFilter.batch_filter",
     "GHKFilter.VRF()[0]",
