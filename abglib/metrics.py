@@ -188,12 +188,18 @@ def v_pred(v_smooth: np.ndarray, a_smooth: np.ndarray | None, dt) -> np.ndarray:
 
 
 def _estimates(result, dt) -> dict:
+    """The scored estimates of a tracker result; None for those it does not provide
+    (e.g. an estimation method returning only ``x_pred``)."""
     a = getattr(result, "a_smooth", None)
+    vs = getattr(result, "v_smooth", None)
+    xs = getattr(result, "x_smooth", None)
     return {
-        "x_smooth": np.asarray(result.x_smooth),
+        "x_smooth": None if xs is None else np.asarray(xs),
         "x_pred": np.asarray(result.x_pred),
-        "v_smooth": np.asarray(result.v_smooth),
-        "v_pred": v_pred(np.asarray(result.v_smooth), None if a is None else np.asarray(a), dt),
+        "v_smooth": None if vs is None else np.asarray(vs),
+        "v_pred": None
+        if vs is None
+        else v_pred(np.asarray(vs), None if a is None else np.asarray(a), dt),
     }
 
 
@@ -230,9 +236,10 @@ def evaluate_cell(
     gains : Gains, optional
         A fixed-gain or time-varying-gain tracker (run with :func:`abglib.track`).
     runner : callable, optional
-        Instead of ``gains``: ``runner(z (runs, n)) -> object with x_pred, x_smooth,
-        v_smooth`` (and optionally ``a_smooth``) for estimation methods that are not a
-        gain recursion; no noise/lag split and no VRF for these.
+        Instead of ``gains``: ``runner(z (runs, n)) -> object with x_pred`` and, where the
+        method has them, ``x_smooth``, ``v_smooth``, ``a_smooth`` (metrics of missing
+        outputs are empty), for estimation methods that are not a gain recursion; no
+        noise/lag split and no VRF for these.
     noise : mapping, optional
         Noise description for the analytic VRF (:func:`noise_vrf`), e.g.
         ``{"model": "white"}`` or ``{"model": "ar1", "rho": 0.8}``.
@@ -293,6 +300,9 @@ def evaluate_cell(
                 if linear:
                     nz = _estimates(track(z - truth["x"], gains, dt, init=init), dt)
                 for o in OUTPUTS:
+                    if est[o] is None:
+                        acc[c][o]["missing"] = True
+                        continue
                     err = (est[o] - truth[o[0]])[:, burn_in:]
                     finite &= bool(np.all(np.isfinite(err)))
                     a = acc[c][o]
@@ -309,6 +319,9 @@ def evaluate_cell(
                             w = nz[o][:, n_vrf:]
                             per_run_vrf[c][o].append(np.mean(w**2, axis=1) / sigma**2)
             for o in OUTPUTS:
+                if np.ndim(eu_sq[o]) == 0:  # output not provided
+                    eu[o]["missing"] = True
+                    continue
                 eu[o]["sq"] += float(np.sum(eu_sq[o]))
                 eu[o]["max"] = max(eu[o]["max"], float(np.max(np.sqrt(eu_sq[o]))))
     diverged = (stable is False) or not finite
@@ -326,9 +339,10 @@ def evaluate_cell(
         row = {"coord": c, "sigma": float(coords[c]["sigma"]), **common}
         for o in OUTPUTS:
             a = acc[c][o]
-            row[f"rmse_{o}"] = _finite(math.sqrt(a["sq"] / (runs * m)))
-            row[f"max_{o}"] = _finite(a["max"])
-            row[f"lag_{o}"] = _finite(a["sum"] / (runs * m))
+            have = not a.get("missing")
+            row[f"rmse_{o}"] = _finite(math.sqrt(a["sq"] / (runs * m))) if have else None
+            row[f"max_{o}"] = _finite(a["max"]) if have else None
+            row[f"lag_{o}"] = _finite(a["sum"] / (runs * m)) if have else None
             row[f"noise_rms_{o}"] = (
                 _finite(math.sqrt(split[c][o]["noise_sq"] / (runs * m))) if linear else None
             )
@@ -345,8 +359,9 @@ def evaluate_cell(
         linear = False
     row = {"coord": "all", "sigma": None, **common}
     for o in OUTPUTS:
-        row[f"rmse_{o}"] = None if diverged else _finite(math.sqrt(eu[o]["sq"] / (runs * m)))
-        row[f"max_{o}"] = None if diverged else _finite(eu[o]["max"])
+        gone = diverged or eu[o].get("missing", False)
+        row[f"rmse_{o}"] = None if gone else _finite(math.sqrt(eu[o]["sq"] / (runs * m)))
+        row[f"max_{o}"] = None if gone else _finite(eu[o]["max"])
         row[f"lag_{o}"] = None
         for k in ("noise_rms", "lag_rms"):
             vals = [r[f"{k}_{o}"] for r in rows]

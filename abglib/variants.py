@@ -33,13 +33,22 @@ growing_memory      [start=1]                                              growi
 steady_state_kalman q, r, [order=2], [model="piecewise_constant"]          steady_state_kalman
 gains               alpha, beta, [gamma=0]                                 Gains (explicit)
 ==================  =====================================================  ===============
+
+When :mod:`abglib.methods` (seed 001, Al-Wagih & Abdulla) is present, its methods are
+registered too, as rules of kind ``"method"`` scored on their one-step predictions:
+``alwagih_m1`` (alpha0), ``alwagih_m2``, ``alwagih_m3`` ([w_start, w_stop, w_n]),
+``alwagih_m4`` (alpha0, window, [grid_start, grid_stop, grid_n]), ``alwagih_m5``
+([grid_start, grid_stop, grid_n], [causal=0], [memory=1]).
 """
 
 from __future__ import annotations
 
+import importlib.util
 import numbers
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+
+import numpy as np
 
 from . import design
 from ._checks import AbglibValueError
@@ -351,3 +360,87 @@ def variant_family(spec: Mapping, name: str = "variant") -> str:
     """Design family of a variant (e.g. ``'standard (critically damped) α-β'``)."""
     rule, params = variant_rule(spec, name)
     return rule.family_of(params)
+
+
+# --------------------------------------------------------------------------- seed 001
+def _linspace(p, prefix):
+    return np.linspace(
+        float(p[f"{prefix}_start"]), float(p[f"{prefix}_stop"]), int(p[f"{prefix}_n"])
+    )
+
+
+def _register_alwagih_methods() -> None:
+    """Register methods M1-M5 of seed 001 (:mod:`abglib.methods`) when that module exists.
+
+    Each runs on the whole batch of runs and returns the one-step predictions only
+    (seed 001 scores ``x_pred``, eq 26); grids are ``<name>_start, _stop, _n``
+    (:func:`numpy.linspace`); M5's ``causal`` is 0 (the paper's rule, which looks at the
+    current measurement) or 1 (past innovations only, over ``memory`` steps).
+    """
+    if importlib.util.find_spec(f"{__package__}.methods") is None:
+        return
+    from . import methods as m
+
+    fam = "Al-Wagih & Abdulla (seed 001)"
+    for rule in (
+        Rule(
+            "alwagih_m1",
+            lambda p, dt, n: lambda z: m.m1(z, p["alpha0"], dt),
+            ("alpha0",),
+            {},
+            fam,
+            False,
+            "method",
+            "seed 001, eqs 23a-b (M1)",
+        ),
+        Rule(
+            "alwagih_m2",
+            lambda p, dt, n: lambda z: m.m2(z, dt),
+            (),
+            {},
+            fam,
+            False,
+            "method",
+            "seed 001, eqs 24a-b (M2)",
+        ),
+        Rule(
+            "alwagih_m3",
+            lambda p, dt, n: lambda z: m.m3(z, _linspace(p, "w"), dt),
+            (),
+            {"w_start": 0.0, "w_stop": 1.0, "w_n": 21},
+            fam,
+            False,
+            "method",
+            "seed 001, eq 25, Algorithm 1 (M3)",
+        ),
+        Rule(
+            "alwagih_m4",
+            lambda p, dt, n: (
+                lambda z: m.m4(z, p["alpha0"], int(p["window"]), _linspace(p, "grid"), dt)
+            ),
+            ("alpha0", "window"),
+            {"grid_start": 0.05, "grid_stop": 1.0, "grid_n": 20},
+            fam,
+            False,
+            "method",
+            "seed 001, Algorithm 2 (M4)",
+        ),
+        Rule(
+            "alwagih_m5",
+            lambda p, dt, n: (
+                lambda z: m.m5(
+                    z, _linspace(p, "grid"), dt, causal=bool(p["causal"]), memory=int(p["memory"])
+                )
+            ),
+            (),
+            {"grid_start": 0.05, "grid_stop": 1.0, "grid_n": 20, "causal": 0, "memory": 1},
+            fam,
+            False,
+            "method",
+            "seed 001, Algorithm 3 (M5)",
+        ),
+    ):
+        register(rule)
+
+
+_register_alwagih_methods()
