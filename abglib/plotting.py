@@ -344,8 +344,7 @@ def tradeoff_figure(curves: pd.DataFrame, points: pd.DataFrame, scenarios, title
         )
         fig.suptitle(
             title
-            or "Noise versus lag of the smoothed position: each family swept "
-            "over its design parameter"
+            or "Noise versus lag of x̄ per design family\n(each swept over its design parameter)"
         )
         fig.tight_layout(rect=(0, 0.06 + 0.025 * (len(labels) // 4), 1, 1))
     return fig
