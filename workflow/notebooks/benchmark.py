@@ -134,6 +134,13 @@ display(Image(filename=figures["heatmap"]))
 # `tradeoff_curves.csv`): along a curve lighter smoothing trades lag for noise; a family
 # whose curve lies lower-left dominates on that scenario. Crosses are the configured
 # variants of the league table.
+#
+# At the heavy-smoothing end (small α, small tracking index, long QD memory) the noise part
+# rises again: the two-point start-up takes its velocity from two noisy samples (variance
+# 2σ²/T²), and a tracker with a pole radius near 1 carries that start-up error through much
+# of the scoring window. It is part of what such a tracker delivers on a track of this
+# length, so it is not removed; the measured VRF, in contrast, is taken only after each
+# variant's own transient has decayed.
 
 # %%
 display(Image(filename=figures["tradeoff"]))
