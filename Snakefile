@@ -11,6 +11,7 @@ include: "workflow/rules/faa_bendix.smk"
 include: "workflow/rules/huang.smk"
 include: "workflow/rules/datasets.smk"
 include: "workflow/rules/alwagih.smk"
+include: "workflow/rules/benchmark.smk"
 include: "workflow/rules/compare.smk"
 include: "workflow/rules/reports.smk"
 
@@ -19,3 +20,4 @@ rule all:
     default_target: True
     input:
         all_targets(),
+        bench_targets(),

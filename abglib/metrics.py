@@ -1,0 +1,418 @@
+r"""Monte Carlo metrics of one tracker variant on one dataset scenario (a benchmark cell).
+
+Per coordinate of a scenario (arrays ``(runs, n)``: truth position and velocity, and the
+measurements ``z``), a tracker's outputs are scored against the truth over the samples
+after a burn-in:
+
+* RMSE and maximum absolute error of the smoothed and predicted position and velocity
+  (``x_smooth``, ``x_pred``, ``v_smooth``, ``v_pred``);
+* the steady-state lag: the mean error after the burn-in (over runs and samples);
+* the split of the error of a *linear* tracker into a noise part and a lag part. The
+  recursion (seed 000, eqs 1-6) is linear in ``z`` for every initialisation
+  :func:`abglib.track` offers, so with ``z = truth + noise``::
+
+      track(z) - truth = track(noise) + (track(truth) - truth)
+                          noise part    lag part (deterministic given the truth)
+
+  The noise part is computed by tracking the noise ``z - truth`` itself; the lag part
+  is the difference;
+* the measured variance reduction factor: the mean square of the noise part after the
+  tracker has settled, over the noise variance ``sigma^2``, against the analytic VRF
+  (:func:`abglib.analysis.vrf` for white noise, :func:`coloured_vrf` for first-order
+  autoregressive noise). Samples within a run are correlated, so the Monte Carlo
+  confidence interval comes from the across-run spread of the per-run estimates
+  (Student t with ``runs - 1`` degrees of freedom), never from the pooled samples;
+* a divergence flag: unstable fixed gains (:func:`abglib.analysis.is_stable`) or
+  non-finite errors.
+
+:func:`vrf_failures` applies the build check: a fixed-gain variant on white noise whose
+measured VRF lies outside its (Bonferroni-adjusted, simultaneous) confidence interval
+around the exact VRF is a bug, and :class:`VRFMismatchError` is raised.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+
+import numpy as np
+import scipy.linalg
+import scipy.stats
+
+from ._checks import AbglibValueError, check_in_range, check_positive
+from .analysis import is_stable, pole_radius, vrf
+from .analysis._statespace import state_space
+from .engine import track
+from .gains import Gains, require_gains
+
+__all__ = [
+    "OUTPUTS",
+    "VRFMismatchError",
+    "coloured_vrf",
+    "evaluate_cell",
+    "fail_threshold",
+    "noise_vrf",
+    "settle_samples",
+    "v_pred",
+    "vrf_failures",
+]
+
+#: Estimates scored against the truth.
+OUTPUTS = ("x_smooth", "x_pred", "v_smooth", "v_pred")
+
+
+class VRFMismatchError(RuntimeError):
+    """A fixed-gain variant's measured VRF is outside its confidence interval: a bug."""
+
+
+# --------------------------------------------------------------------------- theory
+def coloured_vrf(gains: Gains, rho: float, dt: float = 1.0) -> dict:
+    r"""Steady-state output variance per unit noise variance for AR(1) measurement noise.
+
+    Parameters
+    ----------
+    gains : Gains
+        Scalar, stable canonical gains.
+    rho : float
+        Lag-one correlation of the noise, ``-1 < rho < 1`` (``rho = 0``: white noise,
+        equal to :func:`abglib.analysis.vrf`).
+    dt : float
+        Sample interval ``T`` > 0.
+
+    Returns
+    -------
+    dict
+        Keys ``x_smooth, v_smooth, a_smooth, x_pred, v_pred, a_pred``.
+
+    Notes
+    -----
+    The noise ``w(n) = rho w(n-1) + sqrt(1 - rho^2) e(n)`` (unit variance, ``e`` white)
+    drives the tracker ``s(n) = F s(n-1) + K w(n)`` (seed 000, eqs 1-6; state space of
+    :func:`abglib.analysis.state_space`). The augmented state ``[s, w]`` has
+
+    .. math::
+        A = \begin{bmatrix} F & \rho K \\ 0 & \rho \end{bmatrix},\quad
+        B = \sqrt{1-\rho^2}\begin{bmatrix} K \\ 1 \end{bmatrix},\quad
+        P = A P A^T + B B^T,
+
+    and the VRFs are the diagonal of the ``s`` block (smoothed) and of
+    ``Phi P_s Phi^T`` (predicted). Equivalently :math:`\sum_{k,l} h_k h_l
+    \rho^{|k-l|}` for the impulse response ``h`` of each output (direct summation, the
+    test's independent route).
+    """
+    g = require_gains(gains)
+    if g.shape != ():
+        raise AbglibValueError(f"coloured_vrf needs scalar gains, got a bank of shape {g.shape}")
+    r = float(check_in_range("rho", rho, -1.0, 1.0))
+    if not is_stable(g):
+        raise AbglibValueError(f"gains {g!r} are unstable: the steady-state variance is unbounded")
+    ss = state_space(g, float(check_positive("dt", dt)))
+    n = ss.n
+    A = np.zeros((n + 1, n + 1))
+    A[:n, :n] = ss.F
+    A[:n, n] = r * ss.K
+    A[n, n] = r
+    B = math.sqrt(1.0 - r * r) * np.append(ss.K, 1.0)
+    P = scipy.linalg.solve_discrete_lyapunov(A, np.outer(B, B), method="bilinear")[:n, :n]
+    Pp = ss.Phi @ P @ ss.Phi.T
+    p, pp = np.diag(P), np.diag(Pp)
+    if n == 2:
+        return dict(
+            x_smooth=p[0], v_smooth=p[1], a_smooth=0.0, x_pred=pp[0], v_pred=pp[1], a_pred=0.0
+        )
+    return dict(
+        x_smooth=p[0], v_smooth=p[1], a_smooth=p[2], x_pred=pp[0], v_pred=pp[1], a_pred=pp[2]
+    )
+
+
+def noise_vrf(gains: Gains, noise: Mapping, dt: float = 1.0) -> dict | None:
+    """Analytic VRF for a noise description, or None where there is no exact theory.
+
+    ``noise``: ``{"model": "white"}`` (:func:`abglib.analysis.vrf`) or
+    ``{"model": "ar1", "rho": r}`` (:func:`coloured_vrf`); None for time-varying or
+    unstable gains and for other noise models.
+    """
+    g = require_gains(gains)
+    if g.shape != () or not is_stable(g):
+        return None
+    model = noise.get("model")
+    if model == "white":
+        return vrf(g, dt)
+    if model == "ar1":
+        return coloured_vrf(g, float(noise["rho"]), dt)
+    return None
+
+
+def settle_samples(gains: Gains, eps: float = 1e-8, cap: int = 10**6) -> int:
+    """Samples after which a transient of the tracker has decayed below ``eps`` (relative).
+
+    ``ceil(log(eps) / log(r))`` for the pole radius ``r`` (:func:`abglib.analysis.pole_radius`);
+    ``eps = 1e-8`` leaves margin for the polynomial factors of repeated poles. 0 for
+    deadbeat gains (``r = 0``); ``cap`` for time-varying or unstable gains.
+    """
+    g = require_gains(gains)
+    if g.shape != () or not is_stable(g):
+        return cap
+    r = float(pole_radius(g))
+    if r <= 0.0:
+        return 0
+    return min(cap, math.ceil(math.log(eps) / math.log(r)))
+
+
+def fail_threshold(runs: int, n_checks: int, family_alpha: float) -> float:
+    """|t| above which a measured VRF fails the build.
+
+    Bonferroni over ``n_checks`` simultaneous checks at family-wise error ``family_alpha``
+    (two-sided), Student t with ``runs - 1`` degrees of freedom: with exact theory a
+    correct build fails with probability at most ``family_alpha``.
+    """
+    if runs < 2:
+        raise AbglibValueError(f"runs must be >= 2 for a confidence interval, got {runs!r}")
+    a = float(check_in_range("family_alpha", family_alpha, 0.0, 1.0))
+    n = max(int(n_checks), 1)
+    return float(scipy.stats.t.ppf(1.0 - a / (2.0 * n), runs - 1))
+
+
+# --------------------------------------------------------------------------- estimates
+def v_pred(v_smooth: np.ndarray, a_smooth: np.ndarray | None, dt) -> np.ndarray:
+    """Predicted velocity ``v_p(n) = v̄(n-1) + T ā(n-1)`` (seed 000, eq 5); 0 at n = 0.
+
+    Matches the zero initial state of :func:`abglib.track` (``init="zero"``); for a point
+    initialisation the first samples are inside the burn-in anyway.
+    """
+    out = np.zeros_like(v_smooth)
+    out[..., 1:] = v_smooth[..., :-1]
+    if a_smooth is not None:
+        out[..., 1:] += np.asarray(dt) * a_smooth[..., :-1]
+    return out
+
+
+def _estimates(result, dt) -> dict:
+    """The scored estimates of a tracker result; None for those it does not provide
+    (e.g. an estimation method returning only ``x_pred``)."""
+    a = getattr(result, "a_smooth", None)
+    vs = getattr(result, "v_smooth", None)
+    xs = getattr(result, "x_smooth", None)
+    return {
+        "x_smooth": None if xs is None else np.asarray(xs),
+        "x_pred": np.asarray(result.x_pred),
+        "v_smooth": None if vs is None else np.asarray(vs),
+        "v_pred": None
+        if vs is None
+        else v_pred(np.asarray(vs), None if a is None else np.asarray(a), dt),
+    }
+
+
+def _ci(per_run: np.ndarray, level: float) -> tuple[float, float, float, float]:
+    """Mean, standard error and the two-sided Student-t CI of per-run estimates."""
+    m = float(np.mean(per_run))
+    se = float(np.std(per_run, ddof=1) / math.sqrt(per_run.size))
+    q = float(scipy.stats.t.ppf(0.5 + level / 2.0, per_run.size - 1))
+    return m, se, m - q * se, m + q * se
+
+
+# --------------------------------------------------------------------------- the cell
+def evaluate_cell(
+    coords: Mapping,
+    dt: float,
+    *,
+    gains: Gains | None = None,
+    runner: Callable | None = None,
+    noise: Mapping | None = None,
+    burn_in: int = 0,
+    init="two_point",
+    ci_level: float = 0.95,
+    chunk_runs: int = 1000,
+) -> list[dict]:
+    """Score a tracker on one scenario over its Monte Carlo runs.
+
+    Parameters
+    ----------
+    coords : mapping
+        ``coord -> {"truth_pos": (runs, n), "truth_vel": (runs, n), "z": (runs, n),
+        "sigma": float}`` (``sigma``: the standard deviation of that coordinate's noise).
+    dt : float
+        Sample interval ``T`` (s).
+    gains : Gains, optional
+        A fixed-gain or time-varying-gain tracker (run with :func:`abglib.track`).
+    runner : callable, optional
+        Instead of ``gains``: ``runner(z (runs, n)) -> object with x_pred`` and, where the
+        method has them, ``x_smooth``, ``v_smooth``, ``a_smooth`` (metrics of missing
+        outputs are empty), for estimation methods that are not a gain recursion; no
+        noise/lag split and no VRF for these.
+    noise : mapping, optional
+        Noise description for the analytic VRF (:func:`noise_vrf`), e.g.
+        ``{"model": "white"}`` or ``{"model": "ar1", "rho": 0.8}``.
+    burn_in : int
+        Leading samples excluded from every metric. The VRF is measured from
+        ``max(burn_in, settle_samples(gains))`` on.
+    init : str
+        :func:`abglib.track` initialisation (linear in ``z`` for every choice).
+    ci_level : float
+        Level of the reported confidence interval of the measured VRF.
+    chunk_runs : int
+        Runs tracked at once (bounds memory for large Monte Carlo sizes).
+
+    Returns
+    -------
+    list of dict
+        One row per coordinate and a row ``coord="all"`` (RMSE of the Euclidean error,
+        maximum Euclidean error; the VRF columns are those of the first coordinate pooled
+        with the others when they share sigma, else empty).
+    """
+    if (gains is None) == (runner is None):
+        raise AbglibValueError("evaluate_cell needs exactly one of gains and runner")
+    names = list(coords)
+    if not names:
+        raise AbglibValueError("coords must hold at least one coordinate")
+    first = coords[names[0]]["z"]
+    runs, n = np.shape(first)
+    burn_in = int(burn_in)
+    if not 0 <= burn_in < n:
+        raise AbglibValueError(f"burn_in must satisfy 0 <= burn_in < {n}, got {burn_in}")
+    linear = gains is not None
+    fixed = linear and require_gains(gains).shape == ()
+    stable = bool(is_stable(gains)) if fixed else None
+    theory = noise_vrf(gains, noise, dt) if (fixed and noise is not None) else None
+    settle = settle_samples(gains) if fixed else n
+    n_vrf = max(burn_in, settle)
+    vrf_window = theory is not None and n - n_vrf >= 2
+    # accumulators per coordinate (and Euclidean over all)
+    acc = {c: {o: {"sq": 0.0, "max": 0.0, "sum": 0.0} for o in OUTPUTS} for c in names}
+    split = {c: {o: {"noise_sq": 0.0, "lag_sq": 0.0} for o in OUTPUTS} for c in names}
+    per_run_vrf = {c: {o: [] for o in OUTPUTS} for c in names}
+    eu = {o: {"sq": 0.0, "max": 0.0} for o in OUTPUTS}
+    finite = True
+    m = n - burn_in
+    with np.errstate(over="ignore", invalid="ignore"):
+        for lo in range(0, runs, int(chunk_runs)):
+            hi = min(runs, lo + int(chunk_runs))
+            eu_sq = {o: 0.0 for o in OUTPUTS}
+            for c in names:
+                d = coords[c]
+                z = np.asarray(d["z"][lo:hi], dtype=float)
+                truth = {
+                    "x": np.asarray(d["truth_pos"][lo:hi], dtype=float),
+                    "v": np.asarray(d["truth_vel"][lo:hi], dtype=float),
+                }
+                sigma = float(d["sigma"])
+                est = _estimates(track(z, gains, dt, init=init) if linear else runner(z), dt)
+                if linear:
+                    nz = _estimates(track(z - truth["x"], gains, dt, init=init), dt)
+                for o in OUTPUTS:
+                    if est[o] is None:
+                        acc[c][o]["missing"] = True
+                        continue
+                    err = (est[o] - truth[o[0]])[:, burn_in:]
+                    finite &= bool(np.all(np.isfinite(err)))
+                    a = acc[c][o]
+                    a["sq"] += float(np.sum(err**2))
+                    a["sum"] += float(np.sum(err))
+                    a["max"] = max(a["max"], float(np.max(np.abs(err))))
+                    eu_sq[o] = eu_sq[o] + err**2
+                    if linear:
+                        noise_part = nz[o][:, burn_in:]
+                        lag_part = err - noise_part
+                        split[c][o]["noise_sq"] += float(np.sum(noise_part**2))
+                        split[c][o]["lag_sq"] += float(np.sum(lag_part**2))
+                        if vrf_window:
+                            w = nz[o][:, n_vrf:]
+                            per_run_vrf[c][o].append(np.mean(w**2, axis=1) / sigma**2)
+            for o in OUTPUTS:
+                if np.ndim(eu_sq[o]) == 0:  # output not provided
+                    eu[o]["missing"] = True
+                    continue
+                eu[o]["sq"] += float(np.sum(eu_sq[o]))
+                eu[o]["max"] = max(eu[o]["max"], float(np.max(np.sqrt(eu_sq[o]))))
+    diverged = (stable is False) or not finite
+    common = {
+        "runs": runs,
+        "samples": n,
+        "burn_in": burn_in,
+        "vrf_from_sample": n_vrf if vrf_window else None,
+        "stable": stable,
+        "diverged": diverged,
+        "fixed_gain": fixed,
+    }
+    rows = []
+    for c in names:
+        row = {"coord": c, "sigma": float(coords[c]["sigma"]), **common}
+        for o in OUTPUTS:
+            a = acc[c][o]
+            have = not a.get("missing")
+            row[f"rmse_{o}"] = _finite(math.sqrt(a["sq"] / (runs * m))) if have else None
+            row[f"max_{o}"] = _finite(a["max"]) if have else None
+            row[f"lag_{o}"] = _finite(a["sum"] / (runs * m)) if have else None
+            row[f"noise_rms_{o}"] = (
+                _finite(math.sqrt(split[c][o]["noise_sq"] / (runs * m))) if linear else None
+            )
+            row[f"lag_rms_{o}"] = (
+                _finite(math.sqrt(split[c][o]["lag_sq"] / (runs * m))) if linear else None
+            )
+            _vrf_columns(row, o, per_run_vrf[c][o], theory, ci_level)
+        rows.append(row)
+    if diverged:  # the numbers of a diverging recursion are overflow, not metrics
+        for r in rows:
+            for k in list(r):
+                if k.split("_")[0] in ("rmse", "max", "lag", "noise"):
+                    r[k] = None
+        linear = False
+    row = {"coord": "all", "sigma": None, **common}
+    for o in OUTPUTS:
+        gone = diverged or eu[o].get("missing", False)
+        row[f"rmse_{o}"] = None if gone else _finite(math.sqrt(eu[o]["sq"] / (runs * m)))
+        row[f"max_{o}"] = None if gone else _finite(eu[o]["max"])
+        row[f"lag_{o}"] = None
+        for k in ("noise_rms", "lag_rms"):
+            vals = [r[f"{k}_{o}"] for r in rows]
+            row[f"{k}_{o}"] = (
+                _finite(math.sqrt(sum(v**2 for v in vals)))
+                if linear and all(v is not None for v in vals)
+                else None
+            )
+        _vrf_columns(row, o, [], None, ci_level)
+    rows.append(row)
+    return rows
+
+
+def _finite(x):
+    return x if x is not None and math.isfinite(x) else None
+
+
+def _vrf_columns(row: dict, o: str, chunks: list, theory, level: float) -> None:
+    keys = ("theory", "measured", "se", "lo", "hi", "t")
+    if not chunks or theory is None:
+        row.update({f"vrf_{o}_{k}": None for k in keys})
+        return
+    per_run = np.concatenate(chunks)
+    m, se, lo, hi = _ci(per_run, level)
+    th = float(theory[o])
+    row.update(
+        {
+            f"vrf_{o}_theory": th,
+            f"vrf_{o}_measured": m,
+            f"vrf_{o}_se": se,
+            f"vrf_{o}_lo": lo,
+            f"vrf_{o}_hi": hi,
+            f"vrf_{o}_t": (m - th) / se if se > 0 else (0.0 if m == th else math.inf),
+        }
+    )
+
+
+def vrf_failures(rows, threshold: float, noise_models=("white",), model: str | None = None):
+    """Rows (and outputs) whose measured VRF is outside ``theory +- threshold * se``.
+
+    Only fixed-gain cells whose noise model is in ``noise_models`` count (``model`` is
+    the cell's noise model). Returns a list of ``(coord, output, measured, theory, t)``.
+    """
+    if model not in noise_models:
+        return []
+    bad = []
+    for r in rows:
+        if not r.get("fixed_gain"):
+            continue
+        for o in OUTPUTS:
+            t = r.get(f"vrf_{o}_t")
+            if t is not None and abs(t) > threshold:
+                bad.append((r["coord"], o, r[f"vrf_{o}_measured"], r[f"vrf_{o}_theory"], t))
+    return bad

@@ -1,0 +1,296 @@
+# Benchmark matrix (issue 7): every tracker variant of config["benchmark"]["variants"] on
+# every scenario of config["benchmark"]["scenarios"] (datasets.smk), one job per cell;
+# the league table, heatmap and noise-versus-lag figure; the peers section; the report.
+# Every job reads only its input files and writes only its outputs, so the matrix runs
+# unchanged on a cluster through a Snakemake executor plugin (README).
+
+import re
+
+from abglib.benchmark import n_vrf_checks
+from abglib.variants import variant_gains, variant_rule
+
+BENCH = config.get("benchmark", {})
+BENCH_VARIANTS = BENCH.get("variants", {})
+BENCH_SCENARIOS = list(BENCH.get("scenarios", []))
+
+
+def _check_benchmark():
+    """Fail at parse time on an unknown scenario, rule or parameter, or on a variant no
+    scenario can realise (each message names the variant)."""
+    for s in BENCH_SCENARIOS:
+        dataset_files(s)
+    for name, spec in BENCH_VARIANTS.items():
+        variant_rule(spec, name)
+        errors = []
+        for s in BENCH_SCENARIOS:
+            sc = DATASET_SCENARIOS[s]
+            try:
+                if variant_rule(spec, name)[0].kind == "gains":
+                    variant_gains(spec, float(sc["dt"]), int(sc["n_samples"]), name)
+            except ValueError as exc:
+                errors.append(f"{s}: {exc}")
+        if BENCH_SCENARIOS and len(errors) == len(BENCH_SCENARIOS):
+            raise WorkflowError(
+                f"benchmark variant {name!r} is infeasible on every scenario:\n  "
+                + "\n  ".join(errors)
+            )
+
+
+if BENCH:
+    _check_benchmark()
+
+
+def bench_runs(scenario):
+    """Monte Carlo runs of a cell: the config override, else the dataset's own runs."""
+    runs = BENCH.get("runs")
+    return int(runs) if runs else int(DATASET_SCENARIOS[scenario]["runs"])
+
+
+def bench_mem_mb(wildcards):
+    """Memory of a cell: the dataset (4 arrays per coordinate) plus two tracked chunks."""
+    sc = DATASET_SCENARIOS[wildcards.scenario]
+    n, runs = int(sc["n_samples"]), bench_runs(wildcards.scenario)
+    chunk = min(runs, int(BENCH["chunk_runs"]))
+    return 400 + (runs * n * 2 * 5 + chunk * n * 2 * 16) * 8 // 10**6
+
+
+def _check_family_size():
+    """The Bonferroni bound assumes at most family_size VRF checks in the matrix."""
+    n = n_vrf_checks(len(BENCH_VARIANTS), len(BENCH_SCENARIOS))
+    if n > int(BENCH["family_size"]):
+        raise WorkflowError(
+            f"the benchmark matrix can hold {n} VRF checks, more than "
+            f"benchmark.family_size = {BENCH['family_size']}; raise family_size"
+        )
+
+
+if BENCH:
+    _check_family_size()
+
+
+def bench_cells():
+    return expand(
+        "results/benchmark/cells/{variant}/{scenario}.csv",
+        variant=list(BENCH_VARIANTS),
+        scenario=BENCH_SCENARIOS,
+    )
+
+
+def bench_targets():
+    return [f"{REPORTS}/benchmark/index.html"] if BENCH else []
+
+
+rule benchmark_cell:
+    input:
+        parquet="results/datasets/{scenario}.parquet",
+        manifest="results/datasets/{scenario}.manifest.json",
+    output:
+        cell="results/benchmark/cells/{variant}/{scenario}.csv",
+    log:
+        "logs/benchmark/cells/{variant}/{scenario}.log",
+    benchmark:
+        "benchmarks/results/benchmark/cells/{variant}/{scenario}.tsv"
+    wildcard_constraints:
+        variant="|".join(map(re.escape, BENCH_VARIANTS)) or "no-variants-configured",
+        scenario="|".join(map(re.escape, BENCH_SCENARIOS)) or "no-scenarios-configured",
+    conda:
+        "../envs/abglib.yaml"
+    threads: 1
+    resources:
+        mem_mb=bench_mem_mb,
+        runtime=30,
+    params:
+        spec=lambda wildcards: BENCH_VARIANTS[wildcards.variant],
+        scenario_spec=lambda wildcards: DATASET_SCENARIOS[wildcards.scenario],
+        runs=BENCH.get("runs"),
+        seed=lambda wildcards: int(BENCH["seed"])
+        + int(DATASET_SCENARIOS[wildcards.scenario]["seed"]),
+        burn_in=BENCH.get("burn_in"),
+        init=BENCH.get("init"),
+        ci_level=BENCH.get("ci_level"),
+        chunk_runs=BENCH.get("chunk_runs"),
+        family_alpha=BENCH.get("family_alpha"),
+        family_size=BENCH.get("family_size"),
+        digits=config["significant_digits"],
+    script:
+        "../scripts/benchmark_cell.py"
+
+
+rule benchmark_league:
+    input:
+        cells=bench_cells(),
+    output:
+        league=report(
+            "results/benchmark/league.csv",
+            category="Benchmark",
+            labels={"table": "league table"},
+        ),
+        cells="results/benchmark/cells.csv",
+        tradeoff="results/benchmark/tradeoff.csv",
+        variants="results/benchmark/variants.csv",
+    log:
+        "logs/benchmark/league.log",
+    conda:
+        "../envs/abglib.yaml"
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=10,
+    params:
+        variants=BENCH_VARIANTS,
+        family_alpha=BENCH.get("family_alpha"),
+        family_size=BENCH.get("family_size"),
+        rank_by=BENCH.get("rank_by"),
+        digits=config["significant_digits"],
+    script:
+        "../scripts/benchmark_league.py"
+
+
+rule benchmark_tradeoff:
+    input:
+        parquets=lambda wildcards: [
+            dataset_files(s)[0] for s in BENCH.get("tradeoff_scenarios", [])
+        ],
+    output:
+        curves="results/benchmark/tradeoff_curves.csv",
+    log:
+        "logs/benchmark/tradeoff.log",
+    conda:
+        "../envs/abglib.yaml"
+    threads: 1
+    resources:
+        mem_mb=2000,
+        runtime=20,
+    params:
+        families=BENCH.get("tradeoff_families"),
+        burn_in=BENCH.get("burn_in"),
+        init=BENCH.get("init"),
+        digits=config["significant_digits"],
+    script:
+        "../scripts/benchmark_tradeoff.py"
+
+
+rule benchmark_figures:
+    input:
+        league="results/benchmark/league.csv",
+        tradeoff="results/benchmark/tradeoff.csv",
+        curves="results/benchmark/tradeoff_curves.csv",
+    output:
+        heatmap=report(
+            "results/benchmark/figures/heatmap.png",
+            category="Benchmark",
+            labels={"figure": "heatmap"},
+        ),
+        tradeoff=report(
+            "results/benchmark/figures/tradeoff.png",
+            category="Benchmark",
+            labels={"figure": "noise versus lag"},
+        ),
+    log:
+        "logs/benchmark/figures.log",
+    conda:
+        "../envs/abglib.yaml"
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=10,
+    params:
+        dpi=config["figure_dpi"],
+        rank_by=BENCH.get("rank_by"),
+        tradeoff_scenarios=BENCH.get("tradeoff_scenarios"),
+    script:
+        "../scripts/benchmark_figures.py"
+
+
+rule benchmark_peers:
+    output:
+        peers=report(
+            "results/benchmark/peers.csv",
+            category="Benchmark",
+            labels={"table": "peers"},
+        ),
+    log:
+        "logs/benchmark/peers.log",
+    conda:
+        "../envs/abglib.yaml"
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=10,
+    params:
+        rtol=BENCH.get("peers", {}).get("rtol"),
+        seed=BENCH.get("peers", {}).get("seed"),
+        digits=config["significant_digits"],
+    script:
+        "../scripts/benchmark_peers.py"
+
+
+# wall-clock timings: not byte-reproducible, kept out of the deterministic tables
+rule benchmark_speed:
+    input:
+        script=str(Path(workflow.basedir) / "benchmarks" / "engine_speed.py"),
+    output:
+        speed="results/benchmark/engine_speed.csv",
+    log:
+        "logs/benchmark/engine_speed.log",
+    conda:
+        "../envs/abglib.yaml"
+    threads: 1
+    resources:
+        mem_mb=2000,
+        runtime=10,
+    params:
+        repeats=BENCH.get("speed", {}).get("repeats", 1),
+        run=BENCH.get("speed", {}).get("run", False),
+    script:
+        "../scripts/benchmark_speed.py"
+
+
+rule benchmark_report:
+    input:
+        notebook=str(NOTEBOOKS / "benchmark.py"),
+        figures=[
+            "results/benchmark/figures/heatmap.png",
+            "results/benchmark/figures/tradeoff.png",
+        ],
+        tables=[
+            "results/benchmark/league.csv",
+            "results/benchmark/cells.csv",
+            "results/benchmark/tradeoff.csv",
+            "results/benchmark/tradeoff_curves.csv",
+            "results/benchmark/variants.csv",
+            "results/benchmark/peers.csv",
+            "results/benchmark/engine_speed.csv",
+        ],
+    output:
+        html=f"{REPORTS}/benchmark/index.html",
+        figures=expand(
+            f"{REPORTS}/benchmark/figures/{{f}}.png", f=["heatmap", "tradeoff"]
+        ),
+        tables=expand(
+            f"{REPORTS}/benchmark/tables/{{t}}.csv",
+            t=[
+                "league",
+                "cells",
+                "tradeoff",
+                "tradeoff_curves",
+                "variants",
+                "peers",
+                "engine_speed",
+            ],
+        ),
+    log:
+        "logs/reports/benchmark.log",
+    conda:
+        "../envs/abglib.yaml"
+    threads: 1
+    resources:
+        mem_mb=2000,
+        runtime=20,
+    params:
+        doc="benchmark",
+        version=VERSION,
+        repo=lambda wildcards, input: REPO,
+        timeout=config["notebook_timeout"],
+    script:
+        "../scripts/render_report.py"

@@ -1,0 +1,21 @@
+"""Heatmap of the benchmark matrix and the noise-versus-lag trade-off per design family."""
+
+import pandas as pd
+
+from abglib.pipeline import log_to
+
+
+def main(input, output, params) -> None:
+    from abglib.plotting import benchmark_heatmap, save_figure, tradeoff_figure
+
+    league = pd.read_csv(input.league)
+    save_figure(benchmark_heatmap(league, params.rank_by), output.heatmap, params.dpi)
+    points = pd.read_csv(input.tradeoff)
+    curves = pd.read_csv(input.curves)
+    fig = tradeoff_figure(curves, points, params.tradeoff_scenarios)
+    save_figure(fig, output.tradeoff, params.dpi)
+
+
+if "snakemake" in globals():
+    log_to(snakemake.log[0])  # noqa: F821
+    main(snakemake.input, snakemake.output, snakemake.params)  # noqa: F821

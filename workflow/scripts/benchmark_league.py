@@ -1,0 +1,45 @@
+"""League table of the benchmark matrix, all cells in one table, trade-off points, variants."""
+
+import pandas as pd
+
+from abglib.pipeline import log_to
+
+
+def variants_table(specs) -> pd.DataFrame:
+    """One row per configured variant: rule, family, source, parameters as given."""
+    from abglib.variants import variant_rule
+
+    rows = []
+    for name, spec in specs.items():
+        rule, params = variant_rule(spec, name)
+        rows.append(
+            {
+                "variant": name,
+                "rule": rule.name,
+                "family": rule.family_of(params),
+                "fixed_gain": rule.fixed_gain,
+                "source": rule.source,
+                "parameters": ", ".join(f"{k}={v}" for k, v in sorted(params.items())),
+            }
+        )
+    return pd.DataFrame(rows)
+
+
+def main(input, output, params) -> None:
+    from abglib.benchmark import league_table, tradeoff_table
+    from abglib.compare import write_csv
+    from abglib.metrics import fail_threshold
+
+    cells = [pd.read_csv(p) for p in input.cells]
+    runs = min(int(c["runs"].iloc[0]) for c in cells)
+    threshold = fail_threshold(runs, int(params.family_size), float(params.family_alpha))
+    d = params.digits
+    write_csv(league_table(cells, threshold, params.rank_by), output.league, d)
+    write_csv(pd.concat(cells, ignore_index=True), output.cells, d)
+    write_csv(tradeoff_table(cells), output.tradeoff, d)
+    write_csv(variants_table(params.variants), output.variants, d)
+
+
+if "snakemake" in globals():
+    log_to(snakemake.log[0])  # noqa: F821
+    main(snakemake.input, snakemake.output, snakemake.params)  # noqa: F821

@@ -1,0 +1,15 @@
+"""abglib against FilterPy, scipy.signal and python-control on the same gains."""
+
+from abglib.pipeline import log_to
+
+
+def main(output, params) -> None:
+    from abglib.compare import write_csv
+    from abglib.peers import agreement_table
+
+    write_csv(agreement_table(float(params.rtol), int(params.seed)), output.peers, params.digits)
+
+
+if "snakemake" in globals():
+    log_to(snakemake.log[0])  # noqa: F821
+    main(snakemake.output, snakemake.params)  # noqa: F821

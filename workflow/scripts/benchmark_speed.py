@@ -1,0 +1,33 @@
+"""Run benchmarks/engine_speed.py at its --quick size; timings are wall clock.
+
+The CSV is NOT byte-reproducible (timings vary run to run); the report shows it apart
+from the deterministic tables. With ``benchmark.speed.run: false`` an empty table is
+written instead.
+"""
+
+import importlib.util
+
+import pandas as pd
+
+from abglib.pipeline import atomic_output, log_to
+
+COLUMNS = ["case", "filter", "implementation", "samples_per_s", "ratio_vs_filterpy"]
+
+
+def main(input, output, params, logger) -> None:
+    if not params.run:
+        df = pd.DataFrame(columns=COLUMNS)
+    else:
+        spec = importlib.util.spec_from_file_location("engine_speed", input.script)
+        mod = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        df = mod.run(quick=True, repeats=int(params.repeats))
+        worst = df.loc[df.implementation == "filterpy", "max_rel_diff"].max()
+        logger.info("largest FilterPy/abglib relative difference: %.3g", worst)
+    with atomic_output(output.speed) as tmp:
+        df.to_csv(tmp, index=False, float_format="%.3g")
+
+
+if "snakemake" in globals():
+    _logger = log_to(snakemake.log[0])  # noqa: F821
+    main(snakemake.input, snakemake.output, snakemake.params, _logger)  # noqa: F821
