@@ -8,6 +8,7 @@ configfile: "config.yaml"
 include: "workflow/rules/common.smk"
 include: "workflow/rules/steelman1978.smk"
 include: "workflow/rules/faa_bendix.smk"
+include: "workflow/rules/antenna.smk"
 include: "workflow/rules/compare.smk"
 include: "workflow/rules/reports.smk"
 
