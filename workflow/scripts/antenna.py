@@ -22,9 +22,8 @@ from abglib.antenna import (
     kalman_object_enbw,
     preview_gain,
     preview_series,
-    riccati_iterate,
-    sine_state,
     simulate,
+    sine_state,
     spectral_radius,
     stable_interval,
     steady_state_amplitudes,
@@ -489,7 +488,8 @@ def reproduced_tables(
     put(
         "ch2.norm_ag_lt_1",
         norm < 1.0,
-        f"||A_g||_2 = {norm:.3g} with spectral radius {ck['spectral radius of A_g (eq 2.16)']:.3g}: "
+        f"||A_g||_2 = {norm:.3g} with spectral radius "
+        f"{ck['spectral radius of A_g (eq 2.16)']:.3g}: "
         "stability of A_g bounds the spectral radius, not the 2-norm; the preview-step count "
         "is therefore taken from the powers ||A_g^n||_2 (abglib.antenna.preview_steps)",
     )
