@@ -243,7 +243,9 @@ _ANTENNA_NOTE = "model reconstructed (parameter values lost in the scan)"
 def _antenna_sweep_axes(fig_title, nrows=1, ncols=2, figsize=(9.0, 4.0)):
     with plt.rc_context(_STYLE):
         fig, axes = plt.subplots(nrows, ncols, figsize=figsize, squeeze=False)
-    fig.suptitle(fig_title, fontsize=9)
+    import textwrap
+
+    fig.suptitle(textwrap.fill(fig_title, width=int(14 * figsize[0])), fontsize=9)
     return fig, axes
 
 
@@ -276,7 +278,7 @@ def _antenna_tracking(t):
         ax.set_xlabel("dimensionless time t")
     for ax in axes.flat[len(cases):]:
         ax.set_visible(False)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig
 
 
@@ -299,7 +301,7 @@ def _antenna_omega_sweep(t):
         for ax in axes[row]:
             ax.set_xlabel("frequency ratio ω")
     axes[0, 0].legend(ncol=2)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig
 
 
@@ -321,7 +323,7 @@ def _antenna_kalman_vw(t):
             axes[i, j].set_xlabel("t")
             label = "e (-)" if col == "e" else f"error of z^({col[-1]}) (-)"
             axes[i, j].set_ylabel(label)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig
 
 
@@ -344,7 +346,7 @@ def _antenna_kalman_sweep(t):
         axes[row, 0].legend()
         for ax in axes[row]:
             ax.set_xlabel("frequency ratio ω")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig
 
 
@@ -364,7 +366,7 @@ def _antenna_amplitude(t):
         axes[row, 1].set_ylabel("u (-)")
         for ax in axes[row]:
             ax.set_xlabel("t")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig
 
 
@@ -381,11 +383,14 @@ def _antenna_robustness(t):
         if len(un):
             ax.loglog(un["factor"], e[un.index].fillna(1e3), "rx", label="unstable (radius > 1)")
         ax.axvline(1.0, color="k", lw=0.6)
-        ax.set_title(name, fontsize=8)
+        if name == "p_a":  # the stable window is narrow: zoom in (Fig. I.22)
+            ax.set_xscale("linear")
+            ax.set_xlim(0.95, 1.05)
+        ax.set_title(f"{name} (max |e| capped at 1e3)", fontsize=8)
         ax.set_xlabel("multiplication factor")
         ax.set_ylabel("max |e| (-)")
     axes.flat[0].legend()
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig
 
 
@@ -402,7 +407,7 @@ def _antenna_abg(t):
     for ax in axes[0]:
         ax.set_xlabel("frequency ratio ω")
         ax.legend()
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.9))
     return fig
 
 
