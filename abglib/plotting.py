@@ -396,17 +396,22 @@ def _antenna_robustness(t):
 
 def _antenna_abg(t):
     fig, axes = _antenna_sweep_axes(
-        "Beyond the source: fixed-gain α-β-γ (ENBW of the Kalman object estimator) instead of "
-        f"the Kalman filter, 5th-order model, amplitude 10 ({_ANTENNA_NOTE})", 1, 2)
-    axes[0, 0].loglog(t["omega"], t["e_max_kalman5"], ".-", label="Kalman, 5th-order model")
-    axes[0, 0].loglog(t["omega"], t["e_max_abg"], ".-", label="α-β-γ, 2nd-order preview")
-    axes[0, 1].loglog(t["omega"], t["u_max_kalman5"], ".-", label="Kalman, 5th-order model")
-    axes[0, 1].loglog(t["omega"], t["u_max_abg"], ".-", label="α-β-γ, 2nd-order preview")
+        "Beyond the source: critically damped α-β-γ with the ENBW of a Kalman object predictor "
+        f"instead of that Kalman filter, amplitude 10, Q/R = 100 ({_ANTENNA_NOTE})", 1, 2)
+    curves = [
+        ("kalman5", "Kalman, 5th-order model", dict(color="C0")),
+        ("abg5", "α-β-γ, ENBW of the 5th-order Kalman", dict(color="C0", ls="--")),
+        ("kalman2", "Kalman, 2nd-order model", dict(color="C1")),
+        ("abg2", "α-β-γ, ENBW of the 2nd-order Kalman", dict(color="C1", ls="--")),
+    ]
+    for key, label, style in curves:
+        axes[0, 0].loglog(t["omega"], t[f"e_max_{key}"], marker=".", label=label, **style)
+        axes[0, 1].loglog(t["omega"], t[f"u_max_{key}"], marker=".", label=label, **style)
     axes[0, 0].set_ylabel("max |e| (-)")
     axes[0, 1].set_ylabel("max |u| (-)")
     for ax in axes[0]:
         ax.set_xlabel("frequency ratio ω")
-        ax.legend()
+    axes[0, 0].legend(fontsize=7)
     fig.tight_layout(rect=(0, 0, 1, 0.9))
     return fig
 
