@@ -90,3 +90,18 @@ def test_simulate_errors(ctrl):
         simulate(NOMINAL, ctrl, mode="known", amplitude=1.0, omega=0.1, n_steps=0)
     with pytest.raises(AbglibValueError, match="mode must be 'known' or 'predicted'"):
         steady_state_amplitudes(ctrl, 0.1, mode="kalman")
+
+
+def test_stable_interval_edges_are_where_the_radius_crosses():
+    """App. H's stability window of p_a: the located edges have radius 1 + tol, and the
+    factors just inside/outside are stable/unstable."""
+    from abglib.antenna import stable_interval
+
+    tol = 1e-6
+    args = (DT, 100.0, 1.0, 5, 5e-10, VV)
+    lo, hi = stable_interval(NOMINAL, "p_a", *args, grid=[0.95, 1.0, 1.06], tol=tol)
+    assert 0.95 < lo < 1.0 < hi < 1.06
+    for edge in (lo, hi):
+        assert spectral_radius(NOMINAL, "p_a", edge, *args) == pytest.approx(1 + tol, abs=1e-5)
+    assert spectral_radius(NOMINAL, "p_a", lo * 0.995, *args) > 1 + tol
+    assert spectral_radius(NOMINAL, "p_a", hi * 1.005, *args) > 1 + tol

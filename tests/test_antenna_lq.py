@@ -4,6 +4,8 @@ import control
 import numpy as np
 import pytest
 import scipy.linalg
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from abglib._checks import AbglibValueError
 from abglib.antenna import (
@@ -118,3 +120,22 @@ def test_weight_errors(plant):
         tracker_matrices(a, b, c, np.eye(2), [[1.0]])
     with pytest.raises(AbglibValueError, match="did not converge"):
         riccati_iterate(a, b, c.T @ c, np.eye(1), max_iter=2)
+
+
+@settings(max_examples=15, deadline=None, derandomize=True)
+@given(st.integers(2, 5), st.floats(0.5, 1.2), st.floats(0.1, 100.0), st.integers(0, 2**31 - 1))
+def test_riccati_iteration_random_systems(n, rho, q, seed):
+    """Eq 2.12 by iteration against scipy's Schur-based DARE on random (possibly unstable)
+    controllable, observable systems."""
+    rng = np.random.default_rng(seed)
+    a = rng.normal(size=(n, n))
+    a *= rho / np.abs(np.linalg.eigvals(a)).max()
+    b = rng.normal(size=(n, 1))
+    c = rng.normal(size=(1, n))
+    ctrb = np.hstack([np.linalg.matrix_power(a, k) @ b for k in range(n)])
+    obsv = np.vstack([c @ np.linalg.matrix_power(a, k) for k in range(n)])
+    assume(np.linalg.cond(ctrb) < 1e6 and np.linalg.cond(obsv) < 1e6)
+    qx = c.T @ [[q]] @ c
+    p_are = scipy.linalg.solve_discrete_are(a, b, qx, [[1.0]])
+    p_it = riccati_iterate(a, b, qx, [[1.0]])
+    np.testing.assert_allclose(p_it, p_are, rtol=1e-7, atol=1e-9 * np.abs(p_are).max())

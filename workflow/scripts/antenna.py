@@ -590,9 +590,9 @@ def reproduced_tables(
     e3 = [at01[f"order {q}"].e_max for q in orders if q >= 3]
     put(
         "fig8.third_near_known",
-        bool(max(e3) / ek < 2.0),
+        bool(max(e3) / ek < float(thr["near_ratio"])),
         f"omega = {w01:.3g}, Q/R = 100: order >= 3 max error / known = "
-        f"{max(e3) / ek:.3g} (counted 'nearly equal' below 2)",
+        f"{max(e3) / ek:.3g} (counted 'nearly equal' below {thr['near_ratio']:g})",
     )
     put(
         "fig8.max_err_lt_002pct",
@@ -746,7 +746,7 @@ def reproduced_tables(
     ]
     put(
         "sec83.qr_more_control",
-        bool(uinc[2] > 1.5 and uinc[2] == max(uinc)),
+        bool(uinc[2] > float(thr["considerable_ratio"]) and uinc[2] == max(uinc)),
         "median control ratio Q/R 10^4 : 100 for the three V_w: "
         + ", ".join(f"{v:.3g}" for v in uinc),
     )
@@ -765,7 +765,7 @@ def reproduced_tables(
     u5 = float(k14[k14["v_w"] == sets[5][1]]["u_max"].median())
     put(
         "sec83.third_more_control",
-        u3 > 1.2 * u5,
+        u3 > float(thr["considerable_ratio"]) * u5,
         f"median max control at the optimal V_w: third order {u3:.3g}, fifth {u5:.3g}",
     )
     r17 = runs[(runs["figure"] == "I.17-I.19")]
