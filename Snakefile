@@ -12,6 +12,7 @@ include: "workflow/rules/huang.smk"
 include: "workflow/rules/datasets.smk"
 include: "workflow/rules/alwagih.smk"
 include: "workflow/rules/benchmark.smk"
+include: "workflow/rules/antenna.smk"
 include: "workflow/rules/compare.smk"
 include: "workflow/rules/reports.smk"
 

@@ -94,6 +94,29 @@ REPORT_CONTENT = {
             "sensitivity",
         ],
     },
+    "antenna": {
+        "figures": [
+            "taylor",
+            "tracking",
+            "omega_sweep",
+            "kalman_vw",
+            "kalman_sweep",
+            "amplitude",
+            "robustness",
+            "abg",
+        ],
+        "tables": [
+            "comparison",
+            "parameters",
+            "checks",
+            "vw_search",
+            "stability",
+            "abg",
+            "omega_sweep",
+            "kalman_sweep",
+            "robustness",
+        ],
+    },
 }
 
 

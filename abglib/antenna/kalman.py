@@ -1,0 +1,122 @@
+r"""Discrete Kalman filter on the extended antenna + object model (seed 004, ch. 7, app. F-G).
+
+Extended model (eqs 7.28-7.32): :math:`\bar x = [x; x_t]`,
+:math:`\bar A = \mathrm{diag}(A, A_t)`, :math:`\bar B = [B; 0]`; measurements (sec. 7.3)
+driver position :math:`\varphi_d` and tracking error :math:`e = \varphi_a - z`:
+:math:`M = [[e_{\varphi_d}^T, 0], [C, -C_t]]`. The antenna model is exact (:math:`w = 0`);
+the object model error enters through :math:`G_t` (:func:`.objectmodel.taylor_model`) with
+variance :math:`V_w`, the measurement errors have covariance :math:`V_v`.
+
+Riccati equation (eq 7.15):
+
+.. math:: \mathcal{Q} = V_w + A\mathcal{Q}[I + M^TV_v^{-1}M\mathcal{Q}]^{-1}A^T,
+
+gains (eqs 7.18-7.20) :math:`K_f = A\mathcal{Q}[I+M^TV_v^{-1}M\mathcal{Q}]^{-1}M^TV_v^{-1}`,
+:math:`A_f = A - K_f M`, and the estimate of the present state (eqs 7.17, 7.27) is the
+one-step predictor :math:`\hat x_{i+1} = A\hat x_i + Bu_i + K_f(m_i - M\hat x_i)`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg
+
+from .._checks import AbglibValueError, check_positive
+
+__all__ = ["ExtendedModel", "KalmanGains", "extended_model", "kalman_gains", "kalman_riccati"]
+
+
+@dataclass(frozen=True)
+class ExtendedModel:
+    """Matrices of the extended model (eqs 7.30-7.32) and the noise input."""
+
+    A: np.ndarray
+    B: np.ndarray
+    M: np.ndarray
+    G: np.ndarray
+    n_antenna: int
+
+
+def extended_model(a, b, c, at, ct, gt) -> ExtendedModel:
+    """Extended model of antenna ``(a, b, c)`` and object ``(at, ct, gt)`` (eqs 7.28-7.32).
+
+    The first measurement is the driver position (state 1 of :mod:`.model`), the second the
+    tracking error ``c x - ct x_t``.
+    """
+    n, p = a.shape[0], at.shape[0]
+    ae = scipy.linalg.block_diag(a, at)
+    be = np.vstack([b, np.zeros((p, b.shape[1]))])
+    m = np.zeros((2, n + p))
+    m[0, 1] = 1.0
+    m[1, :n] = c[0]
+    m[1, n:] = -ct[0]
+    g = np.vstack([np.zeros((n, gt.shape[1])), gt])
+    return ExtendedModel(A=ae, B=be, M=m, G=g, n_antenna=n)
+
+
+def _scaled_change(new, old):
+    d = np.sqrt(np.clip(np.diag(new), 1e-300, None))
+    return np.max(np.abs(new - old) / np.outer(d, d))
+
+
+def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
+    """Solve eq 7.15 by iterating it from ``Q = Vw``.
+
+    Parameters
+    ----------
+    a : array (n, n); m : array (k, n); vw : array (n, n) PSD; vv : array (k, k) PD
+    tol : float
+        Stop when every entry changes by less than ``tol`` relative to
+        ``sqrt(Q_ii Q_jj)``.
+    """
+    vv = np.atleast_2d(np.asarray(vv, dtype=float))
+    if not np.allclose(vv, vv.T) or np.linalg.eigvalsh(vv).min() <= 0.0:
+        raise AbglibValueError(f"V_v must be symmetric positive definite, got {vv.tolist()}")
+    vw = np.asarray(vw, dtype=float)
+    if not np.allclose(vw, vw.T) or np.linalg.eigvalsh(vw).min() < -1e-15 * max(
+        1.0, np.abs(vw).max()
+    ):
+        raise AbglibValueError("V_w must be symmetric positive semidefinite")
+    q = vw.copy()
+    for _ in range(int(max_iter)):
+        s = m @ q @ m.T + vv
+        qn = vw + a @ (q - q @ m.T @ np.linalg.solve(s, m @ q)) @ a.T
+        qn = 0.5 * (qn + qn.T)
+        if _scaled_change(qn, q) < tol:
+            return qn
+        q = qn
+    raise AbglibValueError(f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}")
+
+
+@dataclass(frozen=True)
+class KalmanGains:
+    """Q (eq 7.15), Kf, Af, Cf (eqs 7.18-7.20)."""
+
+    Q: np.ndarray
+    Kf: np.ndarray
+    Af: np.ndarray
+    Cf: np.ndarray
+
+
+def kalman_gains(model: ExtendedModel, v_w, v_v) -> KalmanGains:
+    """Steady-state predictor gains of the extended model (eqs 7.15, 7.18-7.20).
+
+    Parameters
+    ----------
+    v_w : float
+        Variance of the object-model error (sec. 7.3, 8.2), > 0.
+    v_v : array (2, 2)
+        Measurement-error covariance (sec. 8.2), positive definite.
+    """
+    v_w = float(check_positive("V_w", v_w))
+    vw = v_w * model.G @ model.G.T
+    q = kalman_riccati(model.A, model.M, vw, v_v)
+    vv = np.atleast_2d(np.asarray(v_v, dtype=float))
+    s = model.M @ q @ model.M.T + vv
+    kf = model.A @ q @ model.M.T @ np.linalg.inv(s)  # eq 7.19 (matrix inversion lemma)
+    # Cf = -[I + M^T Vv^-1 M Q]^-1 M^T Vv^-1 = -M^T (Vv + M Q M^T)^-1, eq 7.18
+    cf = -model.M.T @ np.linalg.inv(s)
+    af = model.A - kf @ model.M
+    return KalmanGains(Q=q, Kf=kf, Af=af, Cf=cf)

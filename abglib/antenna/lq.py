@@ -1,0 +1,186 @@
+r"""Discrete LQ tracker with preview (seed 004, ch. 2, app. A-C).
+
+Plant :math:`x_{i+1} = A x_i + B u_i`, :math:`y_i = C x_i`, error :math:`e_i = y_i - z_i`,
+cost :math:`J = \tfrac12\sum_{i=1}^n e_i^T Q e_i + \tfrac12\sum_{i=0}^{n-1} u_i^T R u_i`
+(eq 2.5). With :math:`P` the stabilising solution of the Riccati equation (eq 2.12)
+
+.. math:: P = C^TQC + A^T P\,[I + BR^{-1}B^TP]^{-1}A,
+
+the optimal input is :math:`u_0 = -Kx_0 - K^v r_1` (eq 2.13) with the matrices of eqs
+2.16-2.21 and the co-state :math:`r_1` of eqs 2.22-2.27 (finite horizon, exact) or eq 2.36
+(truncated to :math:`I_p` preview steps, eq 2.35).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .._checks import AbglibValueError, check_positive
+
+__all__ = [
+    "TrackerMatrices",
+    "finite_preview_u0",
+    "preview_steps",
+    "riccati_iterate",
+    "tracker_matrices",
+    "truncated_preview_u0",
+]
+
+
+def _weights(q, r, ny, nu):
+    q = np.atleast_2d(np.asarray(q, dtype=float))
+    r = np.atleast_2d(np.asarray(r, dtype=float))
+    if q.shape != (ny, ny) or r.shape != (nu, nu):
+        raise AbglibValueError(
+            f"Q must be ({ny}, {ny}) and R ({nu}, {nu}), got {q.shape} and {r.shape}"
+        )
+    if not np.allclose(q, q.T) or np.linalg.eigvalsh(q).min() < -1e-12:
+        raise AbglibValueError(f"Q must be symmetric positive semidefinite, got {q.tolist()}")
+    if not np.allclose(r, r.T) or np.linalg.eigvalsh(r).min() <= 0.0:
+        raise AbglibValueError(f"R must be symmetric positive definite, got {r.tolist()}")
+    return q, r
+
+
+def riccati_iterate(a, b, qx, r, tol=1e-13, max_iter=200000):
+    """Solve eq 2.12 by iterating it from ``P = Qx`` (value iteration).
+
+    Parameters
+    ----------
+    a : array (n, n); b : array (n, m); qx : array (n, n), the state weight C^T Q C;
+    r : array (m, m)
+    tol : float
+        Stop when the largest change is below ``tol`` times the largest entry of P.
+
+    Raises
+    ------
+    AbglibValueError
+        If the iteration has not converged after ``max_iter`` steps.
+    """
+    p = np.array(qx, dtype=float)
+    rinv_bt = np.linalg.solve(r, b.T)
+    n = a.shape[0]
+    for _ in range(int(max_iter)):
+        p_new = qx + a.T @ p @ np.linalg.solve(np.eye(n) + b @ rinv_bt @ p, a)
+        p_new = 0.5 * (p_new + p_new.T)
+        if np.max(np.abs(p_new - p)) <= tol * max(1.0, np.max(np.abs(p_new))):
+            return p_new
+        p = p_new
+    raise AbglibValueError(f"Riccati iteration (eq 2.12) did not converge in {max_iter} steps")
+
+
+@dataclass(frozen=True)
+class TrackerMatrices:
+    """P (eq 2.12) and Ag, Bg, Cg, K, Kv, H (eqs 2.16-2.21)."""
+
+    P: np.ndarray
+    Ag: np.ndarray
+    Bg: np.ndarray
+    Cg: np.ndarray
+    K: np.ndarray
+    Kv: np.ndarray
+    H: np.ndarray
+
+
+def tracker_matrices(a, b, c, q, r, p=None) -> TrackerMatrices:
+    """Matrices of the optimal tracker (eqs 2.12, 2.16-2.21).
+
+    Parameters
+    ----------
+    a : array (n, n); b : array (n, m); c : array (ny, n)
+    q : array (ny, ny)
+        Error weight, symmetric positive semidefinite.
+    r : array (m, m)
+        Effort weight, symmetric positive definite.
+    p : array (n, n), optional
+        A Riccati solution to use; default :func:`riccati_iterate`.
+    """
+    a = np.atleast_2d(np.asarray(a, dtype=float))
+    b = np.asarray(b, dtype=float).reshape(a.shape[0], -1)
+    c = np.atleast_2d(np.asarray(c, dtype=float))
+    q, r = _weights(q, r, c.shape[0], b.shape[1])
+    if p is None:
+        p = riccati_iterate(a, b, c.T @ q @ c, r)
+    kv = np.linalg.solve(r + b.T @ p @ b, b.T)  # eq 2.20
+    bg = -b @ kv  # eq 2.17
+    k = kv @ p @ a  # eq 2.19
+    ag = a + bg @ p @ a  # eq 2.16
+    cg = -c.T @ q  # eq 2.18
+    h = p - c.T @ q @ c  # eq 2.21
+    return TrackerMatrices(P=p, Ag=ag, Bg=bg, Cg=cg, K=k, Kv=kv, H=h)
+
+
+def preview_steps(ag, eps) -> int:
+    """Number of preview steps ``I_p`` (eq 2.35): the least n with ``||Ag^n||_2 <= eps``.
+
+    The source bounds ``||Ag^n||`` by ``a^n`` with ``a = ||Ag||_2 < 1`` (eqs 2.32-2.33);
+    that premise can fail (``||Ag||_2 >= 1`` with all eigenvalues inside the unit circle),
+    so the powers themselves are used.
+    """
+    eps = float(check_positive("eps", eps))
+    ag = np.asarray(ag, dtype=float)
+    if np.max(np.abs(np.linalg.eigvals(ag))) >= 1.0:
+        raise AbglibValueError("Ag must have all eigenvalues inside the unit circle")
+    m = np.eye(ag.shape[0])
+    n = 0
+    while np.linalg.norm(m, 2) > eps:
+        m = ag @ m
+        n += 1
+    return n
+
+
+def _zcol(z, ny):
+    z = np.asarray(z, dtype=float)
+    return z.reshape(-1, ny)
+
+
+def finite_preview_u0(tm: TrackerMatrices, x0, z):
+    """Exact optimal ``u_0`` for the horizon ``n = len(z)`` (eqs 2.22-2.28).
+
+    Parameters
+    ----------
+    z : array (n,) or (n, ny)
+        Desired outputs ``z_1 .. z_n``.
+
+    Notes
+    -----
+    ``r_i = -Phi_{n-i}^T H x_n + sum_k Phi_k^T Cg z_{i+k}`` (eq 2.22, ``Phi_k = Ag^k``),
+    ``x_n = [I + G_n H]^{-1}(Phi_n x_0 + sum_k R_k Cg z_k)`` (eq 2.27) with
+    ``G_n = sum_j Phi_{n-j} Bg Phi_{n-j}^T`` and ``R_k = sum_{j<=k} Phi_{n-j} Bg Phi_{k-j}^T``
+    (eqs 2.25-2.26), then ``u_0 = -K x_0 - Kv r_1`` (eq 2.13).
+    """
+    ag, bg, cg = tm.Ag, tm.Bg, tm.Cg
+    nx = ag.shape[0]
+    zz = _zcol(z, cg.shape[1])
+    n = zz.shape[0]
+    if n < 1:
+        raise AbglibValueError("z must hold at least one future desired output")
+    x0 = np.asarray(x0, dtype=float).reshape(nx)
+    phi = [np.eye(nx)]
+    for _ in range(n):
+        phi.append(ag @ phi[-1])
+    gz = [cg @ zz[k - 1] for k in range(1, n + 1)]  # Cg z_k, k = 1..n
+    # G_n and sum_k R_k Cg z_k
+    gn = np.zeros((nx, nx))
+    s = np.zeros(nx)
+    # w_j = sum_{k>=j} Phi_{k-j}^T Cg z_k (co-state sum without the terminal term, eq 2.22)
+    w = np.zeros((n + 2, nx))
+    for j in range(n, 0, -1):
+        w[j] = ag.T @ w[j + 1] + gz[j - 1]
+    for j in range(1, n + 1):
+        gn += phi[n - j] @ bg @ phi[n - j].T
+        s += phi[n - j] @ bg @ w[j]
+    xn = np.linalg.solve(np.eye(nx) + gn @ tm.H, phi[n] @ x0 + s)
+    r1 = -phi[n - 1].T @ tm.H @ xn + w[1]
+    return -tm.K @ x0 - tm.Kv @ r1
+
+
+def truncated_preview_u0(tm: TrackerMatrices, x0, z):
+    """``u_0`` with the terminal term dropped and ``n = I_p = len(z)`` steps (eqs 2.36-2.37)."""
+    zz = _zcol(z, tm.Cg.shape[1])
+    nx = tm.Ag.shape[0]
+    r1 = np.zeros(nx)
+    for k in range(zz.shape[0], 0, -1):
+        r1 = tm.Ag.T @ r1 + tm.Cg @ zz[k - 1]
+    return -tm.K @ np.asarray(x0, dtype=float).reshape(nx) - tm.Kv @ r1

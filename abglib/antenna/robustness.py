@@ -1,0 +1,63 @@
+"""Robustness of the controlled antenna to design-parameter errors (seed 004, app. H).
+
+The real plant keeps the nominal parameters; controller and Kalman filter are designed
+with one parameter multiplied by a factor. Stability is judged on the linear closed loop
+(:func:`.closedloop.closed_loop_matrix`, quantisation left out): its spectral radius.
+The nominal loop has radius exactly 1: the filter's estimate of the antenna's rigid-body
+mode (an eigenvalue 1 of the antenna model) gets no correction (w = 0 for the antenna,
+sec. 7.3), so that mode of the estimation error is marginal; it is never excited when the
+model is exact. A factor is *stable* when the radius is at most ``1 + tol``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.optimize
+
+from .closedloop import closed_loop_matrix, design_controller
+from .model import AntennaParams
+
+__all__ = ["spectral_radius", "stable_interval"]
+
+
+def spectral_radius(nominal: AntennaParams, name, factor, dt, q, r, order, v_w, v_v) -> float:
+    """Spectral radius of the closed loop with design parameter ``name`` scaled by ``factor``."""
+    design = nominal.scaled(name, factor)
+    ctrl = design_controller(design, dt, q, r)
+    big = closed_loop_matrix(nominal, ctrl, order, v_w, v_v)
+    return float(np.max(np.abs(np.linalg.eigvals(big))))
+
+
+def stable_interval(nominal, name, dt, q, r, order, v_w, v_v, grid, tol=1e-9):
+    """Largest interval of factors around 1 with radius <= 1 + tol, refined by bisection.
+
+    Parameters
+    ----------
+    grid : array
+        Increasing factors containing values on both sides of 1; the edges are located
+        between grid points and refined with :func:`scipy.optimize.brentq`.
+
+    Returns
+    -------
+    (lower, upper) : floats; ``nan`` where the loop stays stable to the end of the grid.
+    """
+    grid = np.asarray(grid, dtype=float)
+
+    def excess(f):
+        return spectral_radius(nominal, name, f, dt, q, r, order, v_w, v_v) - 1.0 - tol
+
+    ex = np.array([excess(f) for f in grid])
+    i1 = int(np.argmin(np.abs(grid - 1.0)))
+    out = []
+    for step, stop in ((-1, -1), (1, len(grid))):
+        j, edge = i1, np.nan
+        while j + step != stop:
+            if ex[j] <= 0.0 < ex[j + step]:
+                a, b = sorted((grid[j], grid[j + step]))
+                edge = scipy.optimize.brentq(excess, a, b, xtol=1e-6 * a)
+                break
+            if ex[j + step] > 0.0:
+                break
+            j += step
+        out.append(edge)
+    return out[0], out[1]

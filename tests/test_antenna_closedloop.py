@@ -1,0 +1,107 @@
+"""Seed 004, ch. 6, 8 and app. H: closed-loop simulations and their linear twins."""
+
+import numpy as np
+import pytest
+
+from abglib import Gains, track
+from abglib._checks import AbglibValueError
+from abglib.analysis._statespace import state_space
+from abglib.antenna import (
+    AntennaParams,
+    closed_loop_matrix,
+    design_controller,
+    simulate,
+    spectral_radius,
+    steady_state_amplitudes,
+)
+
+NOMINAL = AntennaParams(p_a=0.9, p_f=1.0, beta_a=0.05, beta_d=0.005, beta_f=0.1, kappa=1.0)
+DT = 2 * np.pi / 10
+VV = 1e-3 * np.eye(2)
+
+
+@pytest.fixture(scope="module")
+def ctrl():
+    return design_controller(NOMINAL, DT, 100.0, 1.0)
+
+
+@pytest.mark.parametrize(("mode", "order", "omega"), [("known", None, 0.5), ("predicted", 2, 0.3),
+                                                       ("predicted", 5, 0.8)])
+def test_steady_state_amplitude_equals_simulation(ctrl, mode, order, omega):
+    """Frequency-response amplitudes (Figs I.8-I.9) against a long time simulation: the
+    simulated maximum after the transient approaches the amplitude from below."""
+    n = 4000
+    r = simulate(NOMINAL, ctrl, amplitude=1.0, omega=omega, n_steps=n, mode=mode, order=order)
+    a = steady_state_amplitudes(ctrl, omega, 1.0, mode, order)
+    tail = slice(n // 2, None)
+    # sampled sinusoid: the maximum over many periods reaches the amplitude to O(dt^2)
+    assert np.abs(r["e"][tail]).max() == pytest.approx(a["e"], rel=2e-2)
+    assert np.abs(r["u"][tail]).max() == pytest.approx(a["u"], rel=2e-2)
+    assert np.abs(r["e"][tail]).max() <= a["e"] * (1 + 1e-9)
+
+
+def test_kalman_run_exact_model_keeps_antenna_estimate(ctrl):
+    """With the exact antenna model and w = 0, the object estimate is all the filter does:
+    the run is bounded and the estimation error of the position stays small."""
+    r = simulate(NOMINAL, ctrl, amplitude=10.0, omega=0.1, n_steps=600, mode="kalman", order=5,
+                 v_w=5e-10, v_v=VV)
+    assert np.abs(r["e"][200:]).max() < 1.0
+    assert np.abs(r["xt_err"][0, 200:]).max() < 0.5
+
+
+def test_abg_mode_is_the_canonical_tracker(ctrl):
+    """The alpha-beta-gamma object estimator inside the loop is abglib.track on the same
+    measurements (CONTRACTS section 1): its predictions equal track's x_pred."""
+    g = Gains(0.5, 0.2, 0.02)
+    r = simulate(NOMINAL, ctrl, amplitude=10.0, omega=0.1, n_steps=300, mode="abg", abg=g)
+    zm = r["y"] - np.round((r["y"] - r["z"]) / 0.1) * 0.1
+    x0 = np.array([0.0, 1.0, 0.0])  # true [z, z', z''] at t = 0
+    init = np.linalg.solve(state_space(g, DT, reduced=False).Phi, x0)
+    out = track(zm, g, dt=DT, init=init)
+    np.testing.assert_allclose(r["xt_err"][0] + r["z"], out.x_pred, atol=1e-10)
+
+
+def test_robustness_radius_and_simulation_agree(ctrl):
+    """App. H: nominal radius 1 (marginal, unexcited); a p_a design error of -10 % gives a
+    radius > 1 and a diverging simulation."""
+    assert spectral_radius(NOMINAL, "p_a", 1.0, DT, 100.0, 1.0, 5, 5e-10, VV) == pytest.approx(
+        1.0, abs=1e-7)
+    rad = spectral_radius(NOMINAL, "p_a", 0.9, DT, 100.0, 1.0, 5, 5e-10, VV)
+    assert rad > 1.1
+    bad = design_controller(NOMINAL.scaled("p_a", 0.9), DT, 100.0, 1.0)
+    r = simulate(NOMINAL, bad, amplitude=10.0, omega=0.1, n_steps=300, mode="kalman", order=5,
+                 v_w=5e-10, v_v=VV)
+    assert np.abs(r["e"][-20:]).max() > 100.0
+    big = closed_loop_matrix(NOMINAL, ctrl, 5, 5e-10, VV)
+    assert big.shape == (6 + 6 + 6, 6 + 6 + 6)
+
+
+def test_simulate_errors(ctrl):
+    common = dict(amplitude=1.0, omega=0.1, n_steps=10)
+    with pytest.raises(AbglibValueError, match="mode must be one of"):
+        simulate(NOMINAL, ctrl, mode="x", **common)
+    with pytest.raises(AbglibValueError, match="needs an order of prediction"):
+        simulate(NOMINAL, ctrl, mode="predicted", **common)
+    with pytest.raises(AbglibValueError, match="needs v_w and v_v"):
+        simulate(NOMINAL, ctrl, mode="kalman", order=3, **common)
+    with pytest.raises(AbglibValueError, match="needs alpha-beta-gamma gains"):
+        simulate(NOMINAL, ctrl, mode="abg", **common)
+    with pytest.raises(AbglibValueError, match="n_steps must be >= 1"):
+        simulate(NOMINAL, ctrl, mode="known", amplitude=1.0, omega=0.1, n_steps=0)
+    with pytest.raises(AbglibValueError, match="mode must be 'known' or 'predicted'"):
+        steady_state_amplitudes(ctrl, 0.1, mode="kalman")
+
+
+def test_stable_interval_edges_are_where_the_radius_crosses():
+    """App. H's stability window of p_a: the located edges have radius 1 + tol, and the
+    factors just inside/outside are stable/unstable."""
+    from abglib.antenna import stable_interval
+
+    tol = 1e-6
+    args = (DT, 100.0, 1.0, 5, 5e-10, VV)
+    lo, hi = stable_interval(NOMINAL, "p_a", *args, grid=[0.95, 1.0, 1.06], tol=tol)
+    assert 0.95 < lo < 1.0 < hi < 1.06
+    for edge in (lo, hi):
+        assert spectral_radius(NOMINAL, "p_a", edge, *args) == pytest.approx(1 + tol, abs=1e-5)
+    assert spectral_radius(NOMINAL, "p_a", lo * 0.995, *args) > 1 + tol
+    assert spectral_radius(NOMINAL, "p_a", hi * 1.005, *args) > 1 + tol

@@ -1,0 +1,283 @@
+# ---
+# jupyter:
+#   jupytext:
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#   kernelspec:
+#     display_name: Python 3
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # Optimal preview control and Kalman estimation for a tracking antenna: a replication
+#
+# A report on discrete-time LQ tracking with preview and Kalman state estimation for a radar
+# tracking antenna, a follow-up to Timmermans (1990) (seed 004). The scan keeps the theory
+# (chapters 2–4 and 7, appendices A–G) but lost **every parameter value of the antenna
+# model** ("The dimensionless parameters, used in this paper, are set to:" is followed by
+# nothing) and every figure (only the text that describes them survives). This report
+# reconstructs the model from what the text still says, re-derives and checks the control
+# and estimation algebra, re-runs the simulations of chapters 6 and 8 and appendix H, and
+# judges every quantitative statement of the text against the reconstruction. Everything
+# shown was computed by the pipeline's rules (`snakemake -c2`); this notebook only reads
+# and displays it.
+#
+# **Read every figure as "replicated on a reconstructed model".** Statements that do not
+# depend on the lost values (the Taylor prediction of Fig. I.4, the Riccati and Stein
+# algebra, the convergence of finite to infinite preview) are judged exactly; the others
+# are judged against the reconstruction, and each note names the lost parameter the number
+# hinges on.
+
+# %% tags=["parameters"]
+# Defaults for interactive use; the pipeline injects the real values after this cell.
+doc = "antenna"
+version = "dev"
+figures = {
+    f: f"results/antenna/figures/{f}.png"
+    for f in ("taylor", "tracking", "omega_sweep", "kalman_vw", "kalman_sweep", "amplitude",
+              "robustness", "abg")
+}
+tables = {
+    t: f"results/antenna/{t}.csv"
+    for t in ("comparison", "parameters", "checks", "vw_search", "stability", "abg",
+              "omega_sweep", "kalman_sweep", "robustness")
+}
+provenance = None
+
+# %%
+import pandas as pd
+from IPython.display import Image, Markdown, display
+
+pd.set_option("display.max_colwidth", 220)
+pd.set_option("display.precision", 4)
+pd.set_option("display.max_columns", 40)
+comparison = pd.read_csv(tables["comparison"], dtype={"published": str}, keep_default_na=False)
+params = pd.read_csv(tables["parameters"], dtype={"value": str})
+checks = pd.read_csv(tables["checks"])
+vw = pd.read_csv(tables["vw_search"])
+stab = pd.read_csv(tables["stability"])
+abg = pd.read_csv(tables["abg"])
+counts = comparison["verdict"].value_counts()
+
+
+def verdicts(*prefixes):
+    """Rows of comparison.csv whose item starts with one of ``prefixes``."""
+    sel = comparison["item"].str.startswith(tuple(prefixes))
+    return comparison[sel][["item", "quantity", "published", "reproduced", "verdict", "note"]]
+
+
+def rep(item_start, quantity_start):
+    """The reproduced value of one comparison row (looked up by item and quantity)."""
+    r = comparison[comparison["item"].str.startswith(item_start)
+                   & comparison["quantity"].str.startswith(quantity_start)]
+    return r["reproduced"].iloc[0]
+
+
+# %% [markdown]
+# ## Reading guide
+#
+# **What holds exactly (model-independent).** The Riccati equation 2.12 solved by the
+# source's iteration equals scipy's `solve_discrete_are` (and python-control's `dlqr` in
+# the tests); the infinite-preview gain from the Stein ("Lyapunov", app. E) equation is the
+# same by a Kronecker solve and by Bartels–Stewart, and the finite-preview gain converges to
+# it — slowly, because a Taylor prediction grows like nᵖ (section 2). The exact finite-horizon
+# law 2.22–2.28 equals a textbook backward dynamic-programming solution (tests). The Kalman
+# Riccati equation 7.15 equals the dual DARE. Fig. I.4's two observations hold (section 3).
+# One premise does **not** hold: eq 2.32 claims ‖A_g‖₂ < 1 because the system is
+# controllable; stability bounds the spectral radius, not the 2-norm (here ‖A_g‖₂ ≈ 5.8), so
+# the preview-step count 2.35 is computed from the powers ‖A_gⁿ‖₂.
+#
+# **What holds on the reconstruction.** Chapter 6's qualitative picture (known output:
+# tiny in-phase error; prediction order matters more at higher ω and higher Q/R) and
+# chapter 8's (an optimal V_w that balances model and quantisation errors, lower model
+# order → larger optimal V_w; estimation makes higher Q/R nearly useless; tracking breaks
+# down above ω ≈ 0.15–0.3) are reproduced. Appendix H's main finding — extreme sensitivity
+# to p_a — is reproduced in kind (a window of a few per cent here, ±0.5 % in the text; the
+# numbers are in section 6), and so is the insensitivity to p_f, β_f and κ.
+#
+# **What cannot be checked.** Numbers that depend on the lost values: the exponents of the
+# V_w settings (lost in the scan), the control amplitudes, and the stability windows. Each
+# such row is a `mismatch` or `not_reproducible` with the parameter it hinges on.
+#
+# The scorecard of this document:
+
+# %%
+display(counts.reindex(["match", "explained", "mismatch", "not_reproducible"], fill_value=0)
+        .rename("rows").to_frame().T.assign(total=len(comparison)))
+
+# %% [markdown]
+# ## 1. The reconstructed model
+#
+# Three degrees of freedom (Fig. I.3): antenna (J_a, φ_a), driver rotor (J_d, φ_d), carriage
+# (J_f, φ_f); spring–damper k_a, b_a between antenna and rotor and k_f, b_f between carriage
+# and environment; driver damping b_d between rotor and stator; the control torque T acts
+# between rotor (+T) and stator (−T). Dimensionless form (`abglib.antenna.model`): time in
+# units of 1/ω₀ with ω₀ = √(k_a/J_a) the antenna eigenfrequency, so that the text's
+# frequency ratio ω is the object's angular frequency; inertias as fractions of J_a + J_d
+# (appendix H names p_a and p_d = 1 − p_a); all dampings β_i = b_i / (2√(k_a J_a)) on one
+# reference, so that the text's damping *ratios* are ratios of the β_i; κ = k_f/k_a;
+# u = T/k_a:
+#
+# φ̈_a = −(φ_a − φ_d) − 2β_a(φ̇_a − φ̇_d)
+#
+# (p_d/p_a) φ̈_d = (φ_a − φ_d) + 2β_a(φ̇_a − φ̇_d) − 2β_d(φ̇_d − φ̇_f) + u
+#
+# (p_f/p_a) φ̈_f = −κ φ_f − 2β_f φ̇_f + 2β_d(φ̇_d − φ̇_f) − u
+#
+# The output is y = φ_a; the tracking error e = y − z. The table gives every value, its
+# textual basis and where the text says it. Two values have **no** textual basis (β_a and
+# p_f); they were fixed before any result was computed and never tuned.
+
+# %%
+display(params)
+
+# %% [markdown]
+# ## 2. The LQ tracker and the preview laws (ch. 2, 4; app. B–E)
+#
+# `abglib.antenna.lq` implements the Riccati equation 2.12 (by the source's iteration), the
+# matrices 2.16–2.21, the exact finite-horizon law 2.22–2.28, the truncated law 2.36–2.37
+# and the preview-step count 2.35; `abglib.antenna.preview` the infinite-preview law 4.5
+# through the Stein equation X = A_gᵀ X A_t + C_g C_t A_t (app. E). The checks on the
+# reconstructed model (the tests repeat them with python-control and on random systems):
+
+# %%
+display(checks)
+display(verdicts("Ch. 2", "Ch. 4"))
+
+# %% [markdown]
+# ## 3. The object model: Taylor prediction (ch. 3, Fig. I.4)
+#
+# z_i = sin(i/100) (Δt = 0.01) predicted from i = 50 with the Taylor model of orders 1–5
+# (`abglib.antenna.objectmodel`; the model route C_t A_tᵏ x_t,0 and the closed-form Taylor
+# polynomial agree to 1e-12). Model-independent, judged exactly.
+
+# %%
+display(Image(filename=figures["taylor"]))
+display(verdicts("Fig. I.4"))
+
+# %% [markdown]
+# ## 4. Tracking with known or predicted desired output (ch. 6, Figs I.5–I.9)
+#
+# Normal track z = 10 sin(0.1 t), Q = 100, R = 1, antenna at rest at t = 0, states exactly
+# known. "Known output" uses the exact future of the sine (infinite preview through the
+# exact sine generator in the Stein equation); "order q" uses the Taylor prediction of that
+# order from the exact derivatives. Figs I.8–I.9 are the exact steady-state amplitudes
+# (frequency response of the closed loop, `steady_state_amplitudes`), i.e. "the maximum
+# values after the initial transient stage".
+
+# %%
+display(Image(filename=figures["tracking"]))
+display(Image(filename=figures["omega_sweep"]))
+display(verdicts("Fig. I.5", "Fig. I.7", "Fig. I.8", "Fig. I.9", "Figs I.8"))
+
+# %% [markdown]
+# The reconstruction tracks *better* than the text reports at high ω (no predicted-output
+# error exceeds the amplitude; the third-order error at ω = 1, Q/R = 10⁴ is a few per cent,
+# not 90 %). These numbers scale with how lightly damped and how fast the antenna is
+# relative to the sampling — β_a, p_f and the reading of "10 times the eigenfrequency"
+# — all lost or read.
+#
+# ## 5. Kalman estimation of the object (ch. 7–8, Figs I.10–I.19)
+#
+# Extended model antenna + object (eqs 7.28–7.32); measurements: driver position and
+# tracking error, both rounded to 0.1; V_v = 10⁻³ I; antenna model exact (w = 0); the object
+# model error enters as a held input of the highest derivative's rate with variance V_w.
+# The estimate is the one-step predictor of eqs 7.17, 7.27; the controller uses the true
+# antenna state and the estimated object state (sec. 8.1). The source's V_w exponents are
+# lost ("5 * lo-'"); we search V_w = 5·10ᵏ for the smallest maximum tracking error on the
+# normal track and use the optimum and two settings either side (fifth order: ×/÷100;
+# third order: ×/÷10, the decade spacing printed for Fig. I.16).
+
+# %%
+display(vw.pivot(index="v_w", columns="order", values="e_max").rename_axis(
+    columns="max |e| on the normal track, by model order"))
+display(Image(filename=figures["kalman_vw"]))
+display(Image(filename=figures["kalman_sweep"]))
+display(Image(filename=figures["amplitude"]))
+display(verdicts("Sec. 8", "Fig. I.1", "Summary", "Ch. 9"))
+
+# %% [markdown]
+# ## 6. Robustness (appendix H, Figs I.20–I.22)
+#
+# The real plant keeps the nominal parameters; controller and Kalman filter are designed
+# with one parameter multiplied by a factor. Stability is the spectral radius of the linear
+# closed loop (plant, controller, filter; quantisation left out); the maximum tracking error
+# comes from a long quantised simulation. The nominal loop has radius exactly 1: the
+# filter never corrects its estimate of the antenna's rigid-body mode (w = 0 for the
+# antenna), a marginal mode that an exact model never excites — and that a wrong model
+# does. This is the mechanism of the extreme sensitivity to p_a.
+
+# %%
+display(Image(filename=figures["robustness"]))
+display(stab)
+pa = stab.set_index("parameter").loc["p_a"]
+display(Markdown(
+    f"Stable window of the design p_a (multiple of the real value): {pa['lower']:.4f} to "
+    f"{pa['upper']:.4f} (text: 0.995 to 1.005). Where `upper`/`lower` is empty the loop "
+    "stays stable to the end of the grid."))
+display(verdicts("App. H"))
+
+# %% [markdown]
+# ## 7. Beyond the source: a fixed-gain α-β-γ instead of the Kalman filter
+#
+# With the antenna known exactly, the Kalman filter's object part is a fixed-gain filter
+# fed with the object position φ_a − e_measured (tracking-error innovation = z − ẑ + v). We
+# replace it by a critically damped ("standard", Steelman 1978; Huang type II) α-β-γ
+# tracker whose **equivalent noise bandwidth** of the predicted position
+# (`abglib.analysis.enbw`: one-sided, Σh²/2T — ENBW matching, not −3 dB) equals that of
+# the Kalman object-position predictor, and use its predicted state [x_p, v_p, a_p] (the
+# same information as the Kalman predictor, which does not use the current measurement)
+# with the second-order Taylor preview. Two matches: the fifth-order Kalman filter of the
+# source's optimal settings, and a second-order Kalman filter (the α-β-γ's own model
+# order, at its own optimal V_w) — the latter separates the price of a *fixed, non-optimal
+# gain shape* from the price of a *lower model order*.
+
+# %%
+display(Image(filename=figures["abg"]))
+cols = ["omega", "e_max_kalman5", "e_max_abg5", "e_max_kalman2", "e_max_abg2",
+        "u_max_kalman5", "u_max_abg5"]
+display(abg[cols])
+nt = abg.iloc[(abg["omega"] - 0.1).abs().argmin()]
+display(Markdown(
+    f"Matched ENBW (per unit dimensionless time): fifth-order Kalman {nt['enbw_5']:.4g} → "
+    f"α = {nt['alpha_5']:.4f}, β = {nt['beta_5']:.4f}, γ = {nt['gamma_5']:.4f}; second-order "
+    f"Kalman {nt['enbw_2']:.4g} → α = {nt['alpha_2']:.4f}, β = {nt['beta_2']:.4f}, "
+    f"γ = {nt['gamma_2']:.4f}.\n\n"
+    f"**Cost on the normal track (ω = {nt['omega']:.3g})**: max |e| = {nt['e_max_abg5']:.3f} "
+    f"with the α-β-γ against {nt['e_max_kalman5']:.3f} with the fifth-order Kalman filter "
+    f"(×{nt['e_max_abg5'] / nt['e_max_kalman5']:.2f}); against the second-order Kalman filter "
+    f"{nt['e_max_kalman2']:.3f}, its ENBW-matched α-β-γ gives {nt['e_max_abg2']:.3f} "
+    f"(×{nt['e_max_abg2'] / nt['e_max_kalman2']:.2f})."))
+
+# %% [markdown]
+# ## 8. Every published number and claim
+#
+# `comparison.csv` (beside this report): tolerance is half a unit in the last printed digit
+# ("about 3 %" accepts 2.5–3.5 %).
+
+# %%
+display(comparison)
+
+# %% [markdown]
+# ## Provenance
+#
+# No random numbers are used: the measurement errors are the deterministic rounding to 0.1.
+
+# %%
+if provenance is not None:
+    from abglib.provenance import to_markdown
+
+    display(Markdown(to_markdown(provenance)))
+
+# %% [markdown]
+# ## References
+#
+# 1. Seed 004: report on discrete optimal preview control and Kalman estimation for a radar
+#    tracking antenna (follow-up to Timmermans, 1990): eqs 2.1–2.37, 3.1–3.8, 4.1–4.6,
+#    7.1–7.35, appendices A–H.
+# 2. J. E. Steelman, *Frequency Response of α-β-γ Trackers*, 1978 (seed 000): eqs 1–6, 22–24.
+# 3. Huang, Yang and Ma, *Research on Fixed-gain Range Tracking Loop* (seed 002): eq 8 (ENBW).
+# 4. R. H. Bartels and G. W. Stewart, "Solution of the matrix equation AX + XB = C", CACM
+#    15 (1972) — the route of `scipy.linalg.solve_sylvester`.

@@ -1,0 +1,104 @@
+# Seed 004: LQ preview control and Kalman estimation for a radar tracking antenna. The
+# model's parameter values are lost in the scan; config.yaml's antenna.parameters holds the
+# reconstruction, the report the reasoning.
+
+AN = config.get("antenna", {})
+if "antenna" in DOCS and not AN:
+    raise WorkflowError("config lists antenna in docs but has no antenna section")
+
+ANTENNA_TABLES = [
+    "parameters",
+    "checks",
+    "taylor",
+    "tracking",
+    "omega_sweep",
+    "vw_search",
+    "kalman_runs",
+    "kalman_sweep",
+    "robustness",
+    "stability",
+    "abg",
+]
+
+
+rule antenna_reproduce:
+    input:
+        published=sorted(str(f) for f in (PUBLISHED / "antenna").glob("*.csv")),
+    output:
+        **{
+            t: report(
+                f"results/antenna/{t}.csv",
+                category="Tracking antenna",
+                subcategory="Tables",
+                labels={"table": t},
+            )
+            for t in ANTENNA_TABLES
+        },
+        reproduced="results/antenna/reproduced.csv",
+        alternatives="results/antenna/alternatives.csv",
+    log:
+        "logs/antenna/reproduce.log",
+    benchmark:
+        "benchmarks/results/antenna/reproduce.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        cfg=AN,
+        digits=config["significant_digits"],
+    script:
+        "../scripts/antenna.py"
+
+
+rule antenna_figures:
+    input:
+        **{t: f"results/antenna/{t}.csv" for t in ANTENNA_TABLES},
+    output:
+        **{
+            f: report(
+                f"results/antenna/figures/{f}.png",
+                category="Tracking antenna",
+                subcategory="Figures",
+                labels={"figure": f},
+            )
+            for f in REPORT_CONTENT["antenna"]["figures"]
+        },
+    log:
+        "logs/antenna/figures.log",
+    benchmark:
+        "benchmarks/results/antenna/figures.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        dpi=config["figure_dpi"],
+    script:
+        "../scripts/antenna_figures.py"
+
+
+rule antenna_report:
+    input:
+        notebook=str(NOTEBOOKS / "antenna.py"),
+        figures=report_figures("antenna"),
+        tables=report_tables("antenna"),
+    output:
+        html=f"{REPORTS}/antenna/index.html",
+        figures=expand(
+            f"{REPORTS}/antenna/figures/{{f}}.png",
+            f=REPORT_CONTENT["antenna"]["figures"],
+        ),
+        tables=expand(
+            f"{REPORTS}/antenna/tables/{{t}}.csv",
+            t=REPORT_CONTENT["antenna"]["tables"],
+        ),
+    log:
+        "logs/reports/antenna.log",
+    benchmark:
+        "benchmarks/results/reports/antenna.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        doc="antenna",
+        version=VERSION,
+        repo=lambda wildcards, input: REPO,
+        timeout=config["notebook_timeout"],
+    script:
+        "../scripts/render_report.py"

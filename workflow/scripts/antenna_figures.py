@@ -1,0 +1,18 @@
+"""Draw the tracking-antenna report's figures (seed 004) from the tables of antenna.py."""
+
+import pandas as pd
+
+from abglib.pipeline import log_to
+
+
+def main(input, output, params) -> None:
+    from abglib.plotting import antenna_figure, save_figure
+
+    tables = {k: pd.read_csv(v) for k, v in input.items()}
+    for name, path in output.items():
+        save_figure(antenna_figure(name, tables), path, dpi=params.dpi)
+
+
+if "snakemake" in globals():
+    log_to(snakemake.log[0])  # noqa: F821
+    main(snakemake.input, snakemake.output, snakemake.params)  # noqa: F821
