@@ -27,6 +27,15 @@ methods
     The gain-selection methods M1-M5 of seed 001 (and a causal M5), batched.
 alwagih
     The seed 001 simulation study: RMSE tables 1-6, the paired t-test, printed-table checks.
+bendix, huang
+    Seed 003 and seed 002 specifics (the Bendix program; thermal-noise error, printed ENBW forms).
+antenna
+    Seed 004: reconstructed antenna model, LQ preview control, Kalman estimation.
+variants, metrics, benchmark, peers
+    The benchmark matrix: named tracker variants, Monte Carlo cell metrics, league tables,
+    agreement with peer libraries.
+plotting, provenance, report
+    Figures, provenance records and report rendering for the pipeline.
 """
 
 from __future__ import annotations
@@ -37,22 +46,29 @@ from ._checks import AbglibValueError
 from .engine import TrackResult, track
 from .gains import Gains
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 __all__ = ["AbglibValueError", "Gains", "TrackResult", "__version__", "track"]
 
 _SUBMODULES = {
     "alwagih",
     "analysis",
+    "antenna",
+    "benchmark",
+    "bendix",
     "compare",
-    "control",
     "conventions",
     "datasets",
     "design",
+    "huang",
     "methods",
+    "metrics",
+    "peers",
     "plotting",
     "provenance",
+    "report",
     "simulate",
+    "variants",
 }
 
 

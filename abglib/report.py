@@ -154,6 +154,7 @@ def write_index(
     scorecard: pd.DataFrame,
     documents: Sequence[Mapping],
     provenance: Mapping,
+    extras: Sequence[Mapping] = (),
 ) -> None:
     """Write ``reports/v<version>/index.html``: the scorecard and links to each report.
 
@@ -169,6 +170,9 @@ def write_index(
         ``{"doc", "title", "href"}`` per report, ``href`` relative to the index.
     provenance : mapping
         From :func:`abglib.provenance.collect`.
+    extras : sequence of mapping
+        ``{"title", "href", "description"}`` per report that replicates no source document
+        (e.g. the benchmark matrix), listed under "Other reports".
     """
     from .provenance import to_markdown
 
@@ -189,6 +193,13 @@ def write_index(
         prov_rows.append(
             "<tr>" + "".join(f"<td>{esc(c).replace('`', '')}</td>" for c in cells) + "</tr>"
         )
+    other = ""
+    if extras:
+        items = "".join(
+            f'<li><a href="{esc(e["href"])}">{esc(e["title"])}</a>: {esc(e["description"])}</li>'
+            for e in extras
+        )
+        other = f"<h2>Other reports</h2>\n<ul>{items}</ul>\n"
     page = f"""<!DOCTYPE html>
 <html lang="en">
 <head><meta charset="utf-8"><title>abglib reports v{esc(version)}</title>
@@ -208,7 +219,7 @@ demonstrated in the report, reproduces the printed number), <b>mismatch</b>,
 {chr(10).join(rows)}
 </table>
 <p>Machine-readable: <a href="scorecard.csv">scorecard.csv</a>.</p>
-<h2>Provenance</h2>
+{other}<h2>Provenance</h2>
 <table>
 <tr><th>item</th><th>value</th></tr>
 {chr(10).join(prov_rows)}

@@ -14,7 +14,7 @@ def main(input, output, params, config) -> None:
         {"doc": d, "title": params.titles.get(d, d), "href": f"{d}/index.html"} for d in params.docs
     ]
     prov = provenance.collect(config, repo=params.repo)
-    write_index(output.html, params.version, card, docs, prov)
+    write_index(output.html, params.version, card, docs, prov, extras=params.extras)
     write_text(output.scorecard, open(input.scorecard, encoding="utf-8").read())
 
 
