@@ -435,3 +435,13 @@ def scorecard(comparisons: Iterable[pd.DataFrame]) -> pd.DataFrame:
         row["total"] = int(len(comp))
         rows.append(row)
     return pd.DataFrame(rows, columns=SCORECARD_COLUMNS).sort_values("doc", ignore_index=True)
+
+
+def non_matches(comparison: pd.DataFrame) -> pd.DataFrame:
+    """The rows of one ``comparison.csv`` whose verdict is not ``match``, with the columns a
+    reader needs to judge them (``item, published, reproduced, verdict, note``)."""
+    cols = ["item", "published", "reproduced", "verdict", "note"]
+    missing = sorted(set(cols) - set(comparison.columns))
+    if missing:
+        raise AbglibValueError(f"comparison table lacks columns {missing}")
+    return comparison.loc[comparison["verdict"] != "match", cols]

@@ -14,9 +14,9 @@ from abglib.antenna import (
     spectral_radius,
     steady_state_amplitudes,
 )
+from tests.antenna_common import DT, NOMINAL_VALUES
 
-NOMINAL = AntennaParams(p_a=0.9, p_f=1.0, beta_a=0.05, beta_d=0.005, beta_f=0.1, kappa=1.0)
-DT = 2 * np.pi / 10
+NOMINAL = AntennaParams(**NOMINAL_VALUES)
 VV = 1e-3 * np.eye(2)
 
 

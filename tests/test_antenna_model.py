@@ -9,9 +9,10 @@ from hypothesis import strategies as st
 
 from abglib._checks import AbglibValueError
 from abglib.antenna import AntennaParams, continuous_model, discrete_plant, zoh
+from tests.antenna_common import NOMINAL_VALUES
 
 # the reconstruction of config.yaml (antenna.parameters)
-NOMINAL = dict(p_a=0.9, p_f=1.0, beta_a=0.05, beta_d=0.005, beta_f=0.1, kappa=1.0)
+NOMINAL = NOMINAL_VALUES
 
 
 @pytest.mark.parametrize(

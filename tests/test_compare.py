@@ -236,3 +236,23 @@ def test_steelman_reproduces_every_published_key_and_alternatives_are_known():
     notebook = (repo / "workflow" / "notebooks" / "steelman1978.py").read_text()
     for section in set(alts["section"]):
         assert f"## {section.replace('-', '–')}" in notebook or f"## {section}" in notebook
+
+
+def test_non_matches_keeps_only_rows_to_judge():
+    from abglib.compare import non_matches
+
+    comp = pd.DataFrame(
+        {
+            "item": ["a", "b", "c"],
+            "published": ["1", "2", ""],
+            "reproduced": ["1", "2.5", "True"],
+            "verdict": ["match", "mismatch", "explained"],
+            "note": ["", "off by .5", "other reading"],
+            "tolerance": ["0.5", "0.5", ""],
+        }
+    )
+    out = non_matches(comp)
+    assert list(out["item"]) == ["b", "c"]
+    assert list(out.columns) == ["item", "published", "reproduced", "verdict", "note"]
+    with pytest.raises(AbglibValueError, match="lacks columns"):
+        non_matches(comp.drop(columns="note"))

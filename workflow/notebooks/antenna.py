@@ -50,6 +50,8 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
+from abglib.compare import scorecard
+
 pd.set_option("display.max_colwidth", 220)
 pd.set_option("display.precision", 4)
 pd.set_option("display.max_columns", 40)
@@ -59,7 +61,6 @@ checks = pd.read_csv(tables["checks"])
 vw = pd.read_csv(tables["vw_search"])
 stab = pd.read_csv(tables["stability"])
 abg = pd.read_csv(tables["abg"])
-counts = comparison["verdict"].value_counts()
 
 
 def verdicts(*prefixes):
@@ -104,8 +105,7 @@ def rep(item_start, quantity_start):
 # The scorecard of this document:
 
 # %%
-display(counts.reindex(["match", "explained", "mismatch", "not_reproducible"], fill_value=0)
-        .rename("rows").to_frame().T.assign(total=len(comparison)))
+display(scorecard([comparison]).set_index("doc"))
 
 # %% [markdown]
 # ## 1. The reconstructed model

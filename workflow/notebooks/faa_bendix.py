@@ -45,6 +45,8 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
+from abglib.compare import non_matches, scorecard
+
 pd.set_option("display.max_colwidth", 200)
 pd.set_option("display.precision", 5)
 pd.set_option("display.max_columns", 40)
@@ -54,7 +56,6 @@ memo = pd.read_csv(tables["memo_table"])
 rounding = pd.read_csv(tables["rounding"])
 row7 = pd.read_csv(tables["row7"])
 damping = pd.read_csv(tables["damping_lags"])
-counts = comparison["verdict"].value_counts()
 
 
 def verdicts(prefix):
@@ -102,11 +103,9 @@ def verdicts(prefix):
 # The scorecard of this document:
 
 # %%
-display(counts.reindex(["match", "explained", "mismatch", "not_reproducible"], fill_value=0)
-        .rename("rows").to_frame().T.assign(total=len(comparison)))
+display(scorecard([comparison]).set_index("doc"))
 display(Markdown("Rows that are not a match:"))
-display(comparison[comparison["verdict"] != "match"][["item", "published", "reproduced",
-                                                      "verdict", "note"]])
+display(non_matches(comparison))
 
 # %% [markdown]
 # ## 1. The test program: impulse and ramp responses

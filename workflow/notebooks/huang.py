@@ -46,6 +46,8 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
+from abglib.compare import non_matches, scorecard
+
 pd.set_option("display.max_colwidth", 220)
 pd.set_option("display.precision", 5)
 pd.set_option("display.max_columns", 40)
@@ -57,7 +59,6 @@ metrics = pd.read_csv(tables["track_metrics"])
 checks = pd.read_csv(tables["checks"], keep_default_na=False)
 curves = pd.read_csv(tables["bandwidth_curves"])
 thermal = pd.read_csv(tables["thermal"])
-counts = comparison["verdict"].value_counts()
 
 
 def verdicts(prefix):
@@ -119,18 +120,9 @@ def evidence(*keys):
 # The scorecard of this document:
 
 # %%
-display(
-    counts.reindex(["match", "explained", "mismatch", "not_reproducible"], fill_value=0)
-    .rename("rows")
-    .to_frame()
-    .T.assign(total=len(comparison))
-)
+display(scorecard([comparison]).set_index("doc"))
 display(Markdown("Rows that are not a match:"))
-display(
-    comparison[comparison["verdict"] != "match"][
-        ["item", "published", "reproduced", "verdict", "note"]
-    ]
-)
+display(non_matches(comparison))
 
 # %% [markdown]
 # ## 1. The loop (eqs 1–7)

@@ -34,6 +34,8 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
+from abglib.compare import non_matches, scorecard
+
 pd.set_option("display.max_colwidth", 400)
 pd.set_option("display.precision", 6)
 comparison = pd.read_csv(tables["comparison"], dtype={"published": str}, keep_default_na=False)
@@ -42,7 +44,6 @@ stability = pd.read_csv(tables["stability"])
 gains = pd.read_csv(tables["gains"])
 design_example = pd.read_csv(tables["design_example"])
 t345 = pd.read_csv(tables["tables345"])
-counts = comparison["verdict"].value_counts()
 
 
 def verdicts(prefix):
@@ -85,18 +86,9 @@ def verdicts(prefix):
 # The scorecard of this document:
 
 # %%
-display(
-    counts.reindex(["match", "explained", "mismatch", "not_reproducible"], fill_value=0)
-    .rename("rows")
-    .to_frame()
-    .T.assign(total=len(comparison))
-)
+display(scorecard([comparison]).set_index("doc"))
 display(Markdown("Rows that are not a match:"))
-display(
-    comparison[comparison["verdict"] != "match"][
-        ["item", "published", "reproduced", "verdict", "note"]
-    ]
-)
+display(non_matches(comparison))
 
 # %% [markdown]
 # ## 1. Figures 1–6
