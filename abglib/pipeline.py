@@ -161,3 +161,22 @@ def atomic_output(path):
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+
+
+def library_hash(package_dir) -> str:
+    """SHA-256 of the abglib sources (every ``*.py`` below ``package_dir``, by relative path
+    and content): a rule parameter, so that Snakemake reruns a rule when the library it
+    calls changes, not only when its own script does."""
+    import hashlib
+
+    root = Path(package_dir)
+    files = sorted(root.rglob("*.py"))
+    if not files:
+        raise AbglibValueError(f"no Python sources below {root}: cannot hash the library")
+    h = hashlib.sha256()
+    for f in files:
+        h.update(f.relative_to(root).as_posix().encode())
+        h.update(b"\0")
+        h.update(f.read_bytes())
+        h.update(b"\0")
+    return h.hexdigest()

@@ -511,7 +511,10 @@ def benchmark_heatmap(league: pd.DataFrame, metric: str = "rmse_x_smooth", title
             for j in range(ratio.shape[1]):
                 v = ratio.iat[i, j]
                 text = "div" if div.iat[i, j] else ("" if not np.isfinite(v) else f"{v:.2g}")
-                ax.text(j, i, text, ha="center", va="center", fontsize=6, color="k")
+                # white text on the dark end of the colour map, black elsewhere
+                dark = np.isfinite(v) and im.norm(v) > 0.6
+                ax.text(j, i, text, ha="center", va="center", fontsize=6,
+                        color="w" if dark else "k")
         ax.set_xticks(range(piv.shape[1]), piv.columns, rotation=60, ha="right")
         ax.set_yticks(range(piv.shape[0]), piv.index)
         ax.set_xlabel("scenario")
@@ -595,7 +598,7 @@ def tradeoff_figure(curves: pd.DataFrame, points: pd.DataFrame, scenarios, title
         fig.tight_layout(rect=(0, 0.06 + 0.025 * (len(labels) // 4), 1, 1))
     return fig
 # --------------------------------------------------------------------------- seed 004
-_ANTENNA_NOTE = "model reconstructed (parameter values lost in the scan)"
+_ANTENNA_NOTE = "reconstructed model: the parameter values are lost in the scan"
 
 
 def _antenna_sweep_axes(fig_title, nrows=1, ncols=2, figsize=(9.0, 4.0)):
@@ -678,7 +681,7 @@ def _antenna_kalman_vw(t):
         for i, (col, lab) in enumerate(panels):
             axes[i, j].plot(c["t"], c[col], lw=0.7)
             axes[i, j].set_title(f"{lab}\n{case}", fontsize=7)
-            axes[i, j].set_xlabel("t")
+            axes[i, j].set_xlabel("t (in units of 1/ω₀)")
             label = "e (-)" if col == "e" else f"error of z^({col[-1]}) (-)"
             axes[i, j].set_ylabel(label)
     fig.tight_layout(rect=(0, 0, 1, 0.95))
@@ -723,7 +726,7 @@ def _antenna_amplitude(t):
         axes[row, 0].set_ylabel("e (-)")
         axes[row, 1].set_ylabel("u (-)")
         for ax in axes[row]:
-            ax.set_xlabel("t")
+            ax.set_xlabel("t (in units of 1/ω₀)")
     fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig
 
@@ -747,7 +750,7 @@ def _antenna_robustness(t):
         ax.set_title(f"{name} (max |e| capped at 1e3)", fontsize=8)
         ax.set_xlabel("multiplication factor")
         ax.set_ylabel("max |e| (-)")
-    axes.flat[0].legend()
+    axes.flat[0].legend(loc="upper right", fontsize=7)
     fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig
 

@@ -39,23 +39,37 @@ def config_hash(config: Mapping) -> str:
     return hashlib.sha256(canonical_json(config).encode("utf-8")).hexdigest()
 
 
-def git_commit(path=".") -> str | None:
-    """The commit checked out at ``path`` (``+dirty`` if tracked files changed), or None.
+def git_commit(path=".", ignore=("reports",)) -> str | None:
+    """The commit checked out at ``path``, ``+dirty`` if tracked files changed, or None.
 
-    None when git is missing or ``path`` is not in a repository (e.g. an unpacked tarball).
+    Changes under ``ignore`` (top-level folders of the repository) do not count: a build
+    rewrites the committed reports it is building, and that must not mark the code it was
+    built from as modified. None when git is missing or ``path`` is not in a repository
+    (e.g. an unpacked tarball).
     """
+
+    def git(*args):
+        return subprocess.run(
+            ["git", *args], cwd=Path(path), capture_output=True, text=True, check=True, timeout=30
+        ).stdout
+
     try:
-        out = subprocess.run(
-            ["git", "describe", "--always", "--dirty=+dirty", "--abbrev=40", "--exclude=*"],
+        commit = git("rev-parse", "HEAD").strip()
+        top = git("rev-parse", "--show-toplevel").strip()
+        excludes = [f":(exclude,top){d}" for d in ignore]
+        changed = subprocess.run(
+            ["git", "status", "--porcelain", "--untracked-files=no", "--", top, *excludes],
             cwd=Path(path),
             capture_output=True,
             text=True,
             check=True,
             timeout=30,
-        )
+        ).stdout
     except (OSError, subprocess.SubprocessError):
         return None
-    return out.stdout.strip() or None
+    if not commit:
+        return None
+    return commit + ("+dirty" if changed.strip() else "")
 
 
 def package_versions(packages=PACKAGES) -> dict[str, str]:

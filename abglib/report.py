@@ -207,8 +207,9 @@ def write_index(
 <body>
 <h1>abglib replication reports, version {esc(version)}</h1>
 <p>Each report regenerates the figures and tables of one source document and compares every
-published number with the value abglib reproduces (<code>comparison.csv</code> beside each
-report). Verdicts: <b>match</b> (within half a unit of the last printed digit, unless the
+published number with the value abglib reproduces (<code>comparison.csv</code> in each
+report's <code>tables/</code> folder). Verdicts: <b>match</b> (within half a unit of the
+last printed digit, unless the
 report states another tolerance), <b>explained</b> (a different quantity or reading,
 demonstrated in the report, reproduces the printed number), <b>mismatch</b>,
 <b>not_reproducible</b>.</p>

@@ -46,6 +46,15 @@ def test_git_commit_in_a_repository(tmp_path):
         pytest.skip("git not available")
     commit = git_commit(tmp_path)
     assert commit is not None and len(commit) == 40
+    # a rebuilt committed report does not make the code dirty; any other change does
+    (tmp_path / "reports").mkdir()
+    (tmp_path / "reports" / "r.html").write_text("a")
+    subprocess.run(["git", *env, "-C", str(tmp_path), "add", "reports"], check=True)
+    subprocess.run(["git", *env, "-C", str(tmp_path), "commit", "-qm", "r"], check=True)
+    commit = git_commit(tmp_path)
+    (tmp_path / "reports" / "r.html").write_text("b")
+    assert git_commit(tmp_path) == commit
+    assert git_commit(tmp_path / "reports") == commit
     (tmp_path / "f").write_text("y")
     assert git_commit(tmp_path) == commit + "+dirty"
 
@@ -70,3 +79,19 @@ def test_wt_grid():
     assert lg[1] == pytest.approx(np.sqrt(0.01 * np.pi))
     with pytest.raises(AbglibValueError, match="start > 0"):
         wt_grid({"start": 0.0, "stop_over_pi": 1.0, "n": 3}, "log")
+
+
+def test_library_hash_follows_content_not_mtime(tmp_path):
+    from abglib.pipeline import library_hash
+
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "a.py").write_text("x = 1\n")
+    (tmp_path / "sub" / "b.py").write_text("y = 2\n")
+    h = library_hash(tmp_path)
+    assert len(h) == 64
+    (tmp_path / "a.py").touch()
+    assert library_hash(tmp_path) == h
+    (tmp_path / "sub" / "b.py").write_text("y = 3\n")
+    assert library_hash(tmp_path) != h
+    with pytest.raises(ValueError, match="no Python sources"):
+        library_hash(tmp_path / "sub" / "empty")

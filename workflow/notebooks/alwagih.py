@@ -62,7 +62,7 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
-pd.set_option("display.max_colwidth", 200)
+pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 4)
 pd.set_option("display.max_columns", 40)
 pd.set_option("display.max_rows", 400)

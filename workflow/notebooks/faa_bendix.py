@@ -47,7 +47,7 @@ from IPython.display import Image, Markdown, display
 
 from abglib.compare import non_matches, scorecard
 
-pd.set_option("display.max_colwidth", 200)
+pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 5)
 pd.set_option("display.max_columns", 40)
 comparison = pd.read_csv(tables["comparison"], dtype={"published": str}, keep_default_na=False)

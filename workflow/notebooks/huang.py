@@ -48,7 +48,7 @@ from IPython.display import Image, Markdown, display
 
 from abglib.compare import non_matches, scorecard
 
-pd.set_option("display.max_colwidth", 220)
+pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 5)
 pd.set_option("display.max_columns", 40)
 pd.set_option("display.max_rows", 200)

@@ -62,6 +62,7 @@ rule alwagih_reproduce:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         cfg=AW,
         digits=config["significant_digits"],
     script:
@@ -113,6 +114,7 @@ rule alwagih_figures:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         dpi=config["figure_dpi"],
     script:
         "../scripts/alwagih_figures.py"
@@ -140,6 +142,7 @@ rule alwagih_report:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         doc="alwagih",
         version=VERSION,
         repo=lambda wildcards, input: REPO,

@@ -43,6 +43,7 @@ rule antenna_reproduce:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         cfg=AN,
         digits=config["significant_digits"],
     script:
@@ -69,6 +70,7 @@ rule antenna_figures:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         dpi=config["figure_dpi"],
     script:
         "../scripts/antenna_figures.py"
@@ -96,6 +98,7 @@ rule antenna_report:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         doc="antenna",
         version=VERSION,
         repo=lambda wildcards, input: REPO,

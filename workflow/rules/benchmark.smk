@@ -100,6 +100,7 @@ rule benchmark_cell:
         mem_mb=bench_mem_mb,
         runtime=30,
     params:
+        library=LIBRARY_HASH,
         spec=lambda wildcards: BENCH_VARIANTS[wildcards.variant],
         scenario_spec=lambda wildcards: DATASET_SCENARIOS[wildcards.scenario],
         runs=BENCH.get("runs"),
@@ -137,6 +138,7 @@ rule benchmark_league:
         mem_mb=1000,
         runtime=10,
     params:
+        library=LIBRARY_HASH,
         variants=BENCH_VARIANTS,
         family_alpha=BENCH.get("family_alpha"),
         family_size=BENCH.get("family_size"),
@@ -162,6 +164,7 @@ rule benchmark_tradeoff:
         mem_mb=2000,
         runtime=20,
     params:
+        library=LIBRARY_HASH,
         families=BENCH.get("tradeoff_families"),
         burn_in=BENCH.get("burn_in"),
         init=BENCH.get("init"),
@@ -195,6 +198,7 @@ rule benchmark_figures:
         mem_mb=1000,
         runtime=10,
     params:
+        library=LIBRARY_HASH,
         dpi=config["figure_dpi"],
         rank_by=BENCH.get("rank_by"),
         tradeoff_scenarios=BENCH.get("tradeoff_scenarios"),
@@ -218,6 +222,7 @@ rule benchmark_peers:
         mem_mb=1000,
         runtime=10,
     params:
+        library=LIBRARY_HASH,
         rtol=BENCH.get("peers", {}).get("rtol"),
         seed=BENCH.get("peers", {}).get("seed"),
         digits=config["significant_digits"],
@@ -240,6 +245,7 @@ rule benchmark_speed:
         mem_mb=2000,
         runtime=10,
     params:
+        library=LIBRARY_HASH,
         repeats=BENCH.get("speed", {}).get("repeats", 1),
         run=BENCH.get("speed", {}).get("run", False),
     script:
@@ -288,6 +294,7 @@ rule benchmark_report:
         mem_mb=2000,
         runtime=20,
     params:
+        library=LIBRARY_HASH,
         doc="benchmark",
         version=VERSION,
         repo=lambda wildcards, input: REPO,

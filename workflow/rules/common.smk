@@ -3,7 +3,7 @@
 from pathlib import Path
 
 import abglib
-from abglib.pipeline import config_errors, prepend_pythonpath
+from abglib.pipeline import config_errors, library_hash, prepend_pythonpath
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
@@ -41,6 +41,10 @@ DOC_TITLES = {
 REPO = workflow.basedir
 PUBLISHED = Path(workflow.basedir) / "data" / "published"
 NOTEBOOKS = Path(workflow.basedir) / "workflow" / "notebooks"
+
+# content hash of the abglib sources: a param of every computing rule, so that a change to
+# the library (not only to a rule's own script) reruns what it computed
+LIBRARY_HASH = library_hash(Path(workflow.basedir) / "abglib")
 
 # per document: figure stems and table stems a report shows and copies beside itself
 REPORT_CONTENT = {

@@ -20,6 +20,7 @@ rule comparison:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         doc="{doc}",
         overrides=lambda wildcards: config["tolerance_overrides"].get(wildcards.doc, {}),
         digits=config["significant_digits"],
@@ -39,6 +40,7 @@ rule scorecard:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         digits=config["significant_digits"],
     script:
         "../scripts/scorecard.py"

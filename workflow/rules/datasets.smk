@@ -14,6 +14,7 @@ rule dataset:
     wildcard_constraints:
         scenario="|".join(DATASET_SCENARIOS) or "no-scenarios-configured",
     params:
+        library=LIBRARY_HASH,
         spec=lambda wildcards: DATASET_SCENARIOS[wildcards.scenario],
     run:
         from abglib import datasets

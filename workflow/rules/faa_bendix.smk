@@ -56,6 +56,7 @@ rule faa_bendix_reproduce:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         cfg=FB,
         digits=config["significant_digits"],
     script:
@@ -92,6 +93,7 @@ rule faa_bendix_figures:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         dpi=config["figure_dpi"],
     script:
         "../scripts/faa_bendix_figures.py"
@@ -119,6 +121,7 @@ rule faa_bendix_report:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         doc="faa_bendix",
         version=VERSION,
         repo=lambda wildcards, input: REPO,

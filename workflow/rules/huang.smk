@@ -39,6 +39,7 @@ rule huang_reproduce:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         cfg=HG,
         digits=config["significant_digits"],
     script:
@@ -68,6 +69,7 @@ rule huang_figures:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         cfg=HG,
         dpi=config["figure_dpi"],
     script:
@@ -96,6 +98,7 @@ rule huang_report:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         doc="huang",
         version=VERSION,
         repo=lambda wildcards, input: REPO,

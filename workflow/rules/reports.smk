@@ -29,6 +29,7 @@ rule report_index:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         docs=DOCS,
         titles=DOC_TITLES,
         extras=EXTRA_REPORTS,

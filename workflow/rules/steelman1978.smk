@@ -18,6 +18,7 @@ rule steelman_frequency_response:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         figure=lambda wildcards: S78["figures"][wildcards.fig],
         grids=S78["grids"],
         digits=config["significant_digits"],
@@ -42,6 +43,7 @@ rule steelman_figure:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         axes=lambda wildcards: S78["figures"][wildcards.fig]["axes"],
         caption=lambda wildcards: S78["figures"][wildcards.fig]["caption"],
         dpi=config["figure_dpi"],
@@ -70,6 +72,7 @@ rule steelman_equations:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         checks=S78["equation_checks"],
         eq53_exponents=[S78["eq53_exponent_3db"], S78["eq53_exponent_6db"]],
         digits=config["significant_digits"],
@@ -108,6 +111,7 @@ rule steelman_reproduce:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         cfg=S78,
         digits=config["significant_digits"],
     script:
@@ -136,6 +140,7 @@ rule steelman_report:
     conda:
         "../envs/abglib.yaml"
     params:
+        library=LIBRARY_HASH,
         doc="steelman1978",
         version=VERSION,
         repo=lambda wildcards, input: REPO,
