@@ -491,7 +491,9 @@ def simulate_range_track(
     t = sample_times(int(n), T)
     truth = polynomial_track(t, r0, v0, accel, jerk)
     z = truth + white_noise(t.shape, sigma_m, seed)
-    init = np.array([r0, v0, 0.0])
+    # ``track``'s explicit init is the state one sample before t = 0, so that its first
+    # prediction is the true range r0 with the true rate v0
+    init = np.array([r0 - v0 * T, v0, 0.0])
     out = {"t": t, "truth": truth, "z": z}
     for name, g in trackers.items():
         noisy = track(z, g, dt=T, init=init, outputs=("x_pred",)).x_pred

@@ -130,7 +130,7 @@ def noise_vrf(gains: Gains, noise: Mapping, dt: float = 1.0) -> dict | None:
 
     ``noise``: ``{"model": "white"}`` (:func:`abglib.analysis.vrf`) or
     ``{"model": "ar1", "rho": r}`` (:func:`coloured_vrf`); None for time-varying or
-    unstable gains and for other noise models.
+    unstable gains. An unknown noise model raises: it must not switch the check off quietly.
     """
     g = require_gains(gains)
     if g.shape != () or not is_stable(g):
@@ -139,8 +139,10 @@ def noise_vrf(gains: Gains, noise: Mapping, dt: float = 1.0) -> dict | None:
     if model == "white":
         return vrf(g, dt)
     if model == "ar1":
+        if "rho" not in noise:
+            raise AbglibValueError("noise model 'ar1' needs 'rho', got keys " + str(sorted(noise)))
         return coloured_vrf(g, float(noise["rho"]), dt)
-    return None
+    raise AbglibValueError(f"noise model must be one of ['white', 'ar1'], got {model!r}")
 
 
 def settle_samples(gains: Gains, eps: float = 1e-8, cap: int = 10**6) -> int:
@@ -295,7 +297,7 @@ def evaluate_cell(
                     "x": np.asarray(d["truth_pos"][lo:hi], dtype=float),
                     "v": np.asarray(d["truth_vel"][lo:hi], dtype=float),
                 }
-                sigma = float(d["sigma"])
+                sigma = float(check_positive("sigma", d["sigma"]))
                 est = _estimates(track(z, gains, dt, init=init) if linear else runner(z), dt)
                 if linear:
                     nz = _estimates(track(z - truth["x"], gains, dt, init=init), dt)

@@ -226,3 +226,13 @@ def test_league_and_tradeoff_tables():
     assert isinstance(trade, pd.DataFrame)
     with pytest.raises(AbglibValueError, match="rank_by must be a metric column"):
         league_table(cells, 5.0, rank_by="nonsense")
+
+
+def test_noise_description_errors_name_the_problem():
+    from abglib.metrics import noise_vrf
+
+    g = Gains(0.5, 0.2)
+    with pytest.raises(AbglibValueError, match="noise model must be one of"):
+        noise_vrf(g, {"colour": "white"})
+    with pytest.raises(AbglibValueError, match="needs 'rho'"):
+        noise_vrf(g, {"model": "ar1"})
