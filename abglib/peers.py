@@ -221,7 +221,8 @@ def _filterpy_rows(label, g: Gains, dt: float, rtol: float, seed: int) -> list[d
             rtol,
             route="abglib.track with the same α, β and γ = 0",
             independent=_rel(fb, ab),
-            supports="abglib",
+            # the disagreement is FilterPy's only if its output is the alpha-beta tracker
+            supports="abglib" if _rel(fb, ab) <= rtol else "neither",
             explanation=(
                 "batch_filter ignores k: its output equals the α-β tracker with the "
                 f"same g, h to {_rel(fb, ab):.1e} relative (independent_value)"

@@ -52,17 +52,22 @@ def gains_from_spec(spec: Mapping) -> Gains:
     ``qd``: QD tracker (seed 000, eqs 28-30) with memory ``m``, or the ``m`` that gives
     the stated alpha.
     """
-    from . import design
+    from .variants import variant_gains
 
     kind = spec.get("design")
     if kind not in DESIGNS:
         raise AbglibValueError(f"design must be one of {list(DESIGNS)}, got {kind!r}")
+    # one dispatch from names to design rules: the variant registry's
     if kind == "qd":
-        if "m" in spec:
-            return design.qd(float(spec["m"]))
-        return design.qd(design.qd_m_from_alpha(float(spec["alpha"])))
-    order = 3 if kind == "standard_abg" else 2
-    return design.standard_from_alpha(float(spec["alpha"]), order)
+        variant = (
+            {"rule": "qd_m", "m": spec["m"]}
+            if "m" in spec
+            else {"rule": "qd_alpha", "alpha": spec["alpha"]}
+        )
+    else:
+        order = 3 if kind == "standard_abg" else 2
+        variant = {"rule": "standard_alpha", "alpha": spec["alpha"], "order": order}
+    return variant_gains(variant, dt=1.0, name=f"curve {kind}")
 
 
 def curve_label(spec: Mapping, gains: Gains) -> str:

@@ -8,6 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from abglib import AbglibValueError, Gains, analysis, track
+from abglib.analysis._statespace import state_space
 from abglib.benchmark import check_cell, league_table, run_cell, tradeoff_table
 from abglib.metrics import (
     VRFMismatchError,
@@ -78,8 +79,13 @@ def test_v_pred_matches_the_recursion():
     z = np.random.default_rng(0).normal(size=50).cumsum()
     r = track(z, g, dt=0.5)
     vp = v_pred(r.v_smooth, r.a_smooth, 0.5)
-    # x_pred(n) - x_smooth(n-1) = T v(n-1) + T^2/2 a(n-1) (seed 000, eq 4); v_pred by eq 5
-    assert vp[1:] == pytest.approx(r.v_smooth[:-1] + 0.5 * r.a_smooth[:-1])
+    # independent route: the state-space transition Phi of abglib.analysis applied to the
+    # smoothed state; its first row must give the engine's own x_pred, its second v_pred
+    phi = state_space(g, 0.5).Phi
+    pred = np.stack([r.x_smooth, r.v_smooth, r.a_smooth])[:, :-1]
+    pred = phi @ pred
+    assert r.x_pred[1:] == pytest.approx(pred[0], rel=1e-12, abs=1e-12)
+    assert vp[1:] == pytest.approx(pred[1], rel=1e-12, abs=1e-12)
 
 
 def _coords(truth_fn, runs, n, dt, noise, sigma):

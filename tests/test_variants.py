@@ -152,3 +152,21 @@ def test_alwagih_methods_registered_when_present():
     assert row["rmse_x_smooth"] is None and row["rmse_x_pred"] >= 0.0
     with pytest.raises(AbglibValueError, match="needs parameter"):
         variant_runner({"rule": "alwagih_m4", "alpha0": 0.1}, 1.0, 40)
+
+
+def test_figure_curve_specs_use_the_variant_rules():
+    from abglib import design
+    from abglib.pipeline import gains_from_spec
+
+    assert gains_from_spec({"design": "qd", "m": 21}) == design.qd(21.0)
+    assert gains_from_spec({"design": "qd", "alpha": 0.3}) == design.qd(design.qd_m_from_alpha(0.3))
+    assert gains_from_spec({"design": "standard_abg", "alpha": 0.3}) == design.standard_from_alpha(
+        0.3, 3
+    )
+    assert gains_from_spec({"design": "standard_ab", "alpha": 0.3}) == design.standard_from_alpha(
+        0.3, 2
+    )
+    with pytest.raises(ValueError, match="design must be one of"):
+        gains_from_spec({"design": "bogus", "alpha": 0.3})
+    with pytest.raises(ValueError, match="alpha"):
+        gains_from_spec({"design": "standard_ab", "alpha": 1.5})
