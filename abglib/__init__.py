@@ -19,23 +19,23 @@ conventions
 analysis
     Transfer functions, frequency response, stability, variance reduction, transient
     measures, ENBW and frequency-domain features, each with a numeric twin.
-compare
-    Published-versus-reproduced tables (``comparison.csv``) and the scorecard.
-datasets
-    Simulated radar datasets (seeded kinematics and noise; Parquet + manifest).
+simulate
+    Trajectories and measurement noise.
 methods
     The gain-selection methods M1-M5 of seed 001 (and a causal M5), batched.
-alwagih
-    The seed 001 simulation study: RMSE tables 1-6, the paired t-test, printed-table checks.
-bendix, huang
-    Seed 003 and seed 002 specifics (the Bendix program; thermal-noise error, printed ENBW forms).
-antenna
-    Seed 004: reconstructed antenna model, LQ preview control, Kalman estimation.
-variants, metrics, benchmark, peers
-    The benchmark matrix: named tracker variants, Monte Carlo cell metrics, league tables,
-    agreement with peer libraries.
-plotting, provenance, report
-    Figures, provenance records and report rendering for the pipeline.
+
+Layers installed with extras (``pip install "abglib[...]"``)
+-----------------------------------------------------------
+bench
+    (``[bench]``) simulated radar datasets, tracker variants, Monte Carlo cell metrics,
+    league tables, agreement with peer libraries.
+replications
+    (``[replications]``) one folder per source document: printed forms, study, claims.
+reporting
+    (``[reporting]``) published-versus-reproduced tables, provenance, report rendering,
+    the shared figure style.
+
+The core (``pip install abglib``) needs numpy, scipy and numba only.
 """
 
 from __future__ import annotations
@@ -46,29 +46,19 @@ from ._checks import AbglibValueError
 from .engine import TrackResult, track
 from .gains import Gains
 
-__version__ = "0.2.0"
+__version__ = "0.3.0"
 
 __all__ = ["AbglibValueError", "Gains", "TrackResult", "__version__", "track"]
 
 _SUBMODULES = {
-    "alwagih",
     "analysis",
-    "antenna",
-    "benchmark",
-    "bendix",
-    "compare",
+    "bench",
     "conventions",
-    "datasets",
     "design",
-    "huang",
     "methods",
-    "metrics",
-    "peers",
-    "plotting",
-    "provenance",
-    "report",
+    "replications",
+    "reporting",
     "simulate",
-    "variants",
 }
 
 

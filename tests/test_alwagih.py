@@ -1,4 +1,4 @@
-"""The seed 001 study (abglib.alwagih): tables, statistics and the printed-table check."""
+"""The seed 001 study (abglib.replications.alwagih): tables, statistics, printed-table check."""
 
 from __future__ import annotations
 
@@ -7,7 +7,9 @@ import pandas as pd
 import pytest
 from scipy import stats
 
-from abglib import alwagih, datasets, methods
+from abglib import methods
+from abglib.bench import datasets
+from abglib.replications.alwagih import study as alwagih
 
 CFG = {
     "m1_alpha": 0.2,

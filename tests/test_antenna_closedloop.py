@@ -6,7 +6,7 @@ import pytest
 from abglib import Gains, track
 from abglib._checks import AbglibValueError
 from abglib.analysis._statespace import state_space
-from abglib.antenna import (
+from abglib.replications.antenna import (
     AntennaParams,
     closed_loop_matrix,
     design_controller,
@@ -95,7 +95,7 @@ def test_simulate_errors(ctrl):
 def test_stable_interval_edges_are_where_the_radius_crosses():
     """App. H's stability window of p_a: the located edges have radius 1 + tol, and the
     factors just inside/outside are stable/unstable."""
-    from abglib.antenna import stable_interval
+    from abglib.replications.antenna import stable_interval
 
     tol = 1e-6
     args = (DT, 100.0, 1.0, 5, 5e-10, VV)

@@ -6,7 +6,7 @@ import pytest
 import scipy.linalg
 
 from abglib._checks import AbglibValueError
-from abglib.antenna import (
+from abglib.replications.antenna import (
     AntennaParams,
     discrete_plant,
     extended_model,

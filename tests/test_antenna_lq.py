@@ -8,7 +8,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from abglib._checks import AbglibValueError
-from abglib.antenna import (
+from abglib.replications.antenna import (
     AntennaParams,
     discrete_plant,
     finite_preview_u0,

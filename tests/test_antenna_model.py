@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from abglib._checks import AbglibValueError
-from abglib.antenna import AntennaParams, continuous_model, discrete_plant, zoh
+from abglib.replications.antenna import AntennaParams, continuous_model, discrete_plant, zoh
 from tests.antenna_common import NOMINAL_VALUES
 
 # the reconstruction of config.yaml (antenna.parameters)

@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from abglib._checks import AbglibValueError
-from abglib.antenna import (
+from abglib.replications.antenna import (
     AntennaParams,
     discrete_plant,
     preview_gain,

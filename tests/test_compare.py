@@ -1,11 +1,11 @@
-"""Published-versus-reproduced logic (abglib.compare; shared/CONTRACTS.md §3)."""
+"""Published-versus-reproduced logic (abglib.reporting.compare; shared/CONTRACTS.md §3)."""
 
 import numpy as np
 import pandas as pd
 import pytest
 
 from abglib import AbglibValueError
-from abglib.compare import (
+from abglib.reporting.compare import (
     COMPARISON_COLUMNS,
     Alternative,
     build_comparison,
@@ -239,7 +239,7 @@ def test_steelman_reproduces_every_published_key_and_alternatives_are_known():
 
 
 def test_non_matches_keeps_only_rows_to_judge():
-    from abglib.compare import non_matches
+    from abglib.reporting.compare import non_matches
 
     comp = pd.DataFrame(
         {

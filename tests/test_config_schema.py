@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from abglib.pipeline import config_errors
+from abglib.reporting.pipeline import config_errors
 
 REPO = Path(__file__).resolve().parents[1]
 SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"

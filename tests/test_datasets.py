@@ -9,8 +9,9 @@ import numpy as np
 import pytest
 import yaml
 
-from abglib import AbglibValueError, datasets
-from abglib.pipeline import config_errors
+from abglib import AbglibValueError
+from abglib.bench import datasets
+from abglib.reporting.pipeline import config_errors
 
 REPO = Path(__file__).resolve().parents[1]
 SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"

@@ -9,9 +9,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from abglib import Gains, bendix, design, track
+from abglib import Gains, design, track
 from abglib.analysis import vrf
-from abglib.compare import build_comparison, read_published
+from abglib.replications.faa_bendix import program as bendix
+from abglib.reporting.compare import build_comparison, read_published
 from abglib.simulate import bendix_impulse, bendix_ramp
 
 ROOT = Path(__file__).resolve().parents[1]

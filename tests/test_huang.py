@@ -1,4 +1,4 @@
-"""Huang, Yang and Ma (seed 002): abglib.huang against independent routes.
+"""Huang, Yang and Ma (seed 002): abglib.replications.huang against independent routes.
 
 ENBW: Lyapunov (abglib.analysis.enbw) vs eq 14 vs the reconstructed eqs 8-13 vs quadrature
 vs summed impulse response vs a noise-driven Monte Carlo, on the printed Tables 1-2 gains;
@@ -19,7 +19,7 @@ import scipy.optimize
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from abglib import design, huang, track
+from abglib import design, track
 from abglib.analysis import (
     enbw,
     enbw_huang_eq8_13,
@@ -31,8 +31,9 @@ from abglib.analysis import (
     transfer_function_huang,
     vrf,
 )
-from abglib.compare import build_comparison, read_published
 from abglib.conventions import from_huang, to_huang
+from abglib.replications.huang import study as huang
+from abglib.reporting.compare import build_comparison, read_published
 
 ROOT = Path(__file__).resolve().parents[1]
 T = 1.0 / 300.0  # seed 002: F_r = 300 Hz

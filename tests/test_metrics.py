@@ -1,4 +1,4 @@
-"""abglib.metrics and abglib.benchmark: each number against an independent route."""
+"""abglib.bench.metrics and abglib.bench.benchmark: each number against an independent route."""
 
 import numpy as np
 import pandas as pd
@@ -9,8 +9,8 @@ from hypothesis import strategies as st
 
 from abglib import AbglibValueError, Gains, analysis, track
 from abglib.analysis._statespace import state_space
-from abglib.benchmark import check_cell, league_table, run_cell, tradeoff_table
-from abglib.metrics import (
+from abglib.bench.benchmark import check_cell, league_table, run_cell, tradeoff_table
+from abglib.bench.metrics import (
     VRFMismatchError,
     coloured_vrf,
     evaluate_cell,
@@ -187,7 +187,7 @@ def test_evaluate_cell_errors():
 
 
 class FakeDataset:
-    """The fields of abglib.datasets.Dataset that run_cell reads."""
+    """The fields of abglib.bench.datasets.Dataset that run_cell reads."""
 
     def __init__(self, name, noise_claimed, noise, truth, dt=1.0):
         runs, n = noise.shape
@@ -235,7 +235,7 @@ def test_league_and_tradeoff_tables():
 
 
 def test_noise_description_errors_name_the_problem():
-    from abglib.metrics import noise_vrf
+    from abglib.bench.metrics import noise_vrf
 
     g = Gains(0.5, 0.2)
     with pytest.raises(AbglibValueError, match="noise model must be one of"):

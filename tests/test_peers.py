@@ -1,11 +1,11 @@
-"""abglib.peers: the agreement table against FilterPy, scipy.signal and python-control."""
+"""abglib.bench.peers: the agreement table against FilterPy, scipy.signal and python-control."""
 
 import numpy as np
 import pytest
 
 from abglib import analysis, design
+from abglib.bench.peers import agreement_table, direct_vrf, monte_carlo_vrf
 from abglib.conventions import to_filterpy
-from abglib.peers import agreement_table, direct_vrf, monte_carlo_vrf
 
 
 @pytest.fixture(scope="module")

@@ -14,7 +14,7 @@ import pandas as pd
 import pytest
 
 import abglib
-from abglib.compare import COMPARISON_COLUMNS, SCORECARD_COLUMNS, VERDICTS
+from abglib.reporting.compare import COMPARISON_COLUMNS, SCORECARD_COLUMNS, VERDICTS
 
 pytestmark = pytest.mark.pipeline
 

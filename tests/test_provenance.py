@@ -1,4 +1,4 @@
-"""Provenance of the reports (abglib.provenance; CONTRACTS.md §4) and pipeline helpers."""
+"""Provenance of the reports (abglib.reporting.provenance; CONTRACTS.md §4) and pipeline helpers."""
 
 import subprocess
 
@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from abglib import AbglibValueError
-from abglib.pipeline import atomic_output, wt_grid
-from abglib.provenance import collect, config_hash, find_seeds, git_commit, to_markdown
+from abglib.reporting.pipeline import atomic_output, wt_grid
+from abglib.reporting.provenance import collect, config_hash, find_seeds, git_commit, to_markdown
 
 
 def test_config_hash_ignores_key_order_and_sees_values():
@@ -82,7 +82,7 @@ def test_wt_grid():
 
 
 def test_library_hash_follows_content_not_mtime(tmp_path):
-    from abglib.pipeline import library_hash
+    from abglib.reporting.pipeline import library_hash
 
     (tmp_path / "sub").mkdir()
     (tmp_path / "a.py").write_text("x = 1\n")

@@ -1,14 +1,14 @@
-"""abglib.variants: config entries -> canonical gains, and their error messages."""
+"""abglib.bench.variants: config entries -> canonical gains, and their error messages."""
 
 import numpy as np
 import pytest
 
 from abglib import AbglibValueError, Gains, analysis, design
-from abglib.variants import RULES, Rule, register, variant_family, variant_gains, variant_rule
+from abglib.bench.variants import RULES, Rule, register, variant_family, variant_gains, variant_rule
 
 
 def test_every_rule_listed_in_the_module_doc():
-    import abglib.variants as v
+    import abglib.bench.variants as v
 
     for name in RULES:
         assert f"\n{name} " in v.__doc__ or f"``{name}``" in v.__doc__, name
@@ -114,7 +114,7 @@ def test_family_and_register():
 
 def test_method_rule_runner(monkeypatch):
     from abglib import track
-    from abglib.variants import variant_runner
+    from abglib.bench.variants import variant_runner
 
     rule = Rule(
         "test_method",
@@ -132,11 +132,9 @@ def test_method_rule_runner(monkeypatch):
 
 
 def test_alwagih_methods_registered_when_present():
-    # M1-M5 of seed 001 live in abglib.methods (branch alwagih); skipped until it is merged
-    methods = pytest.importorskip("abglib.methods")
-    from abglib import track
-    from abglib.metrics import evaluate_cell
-    from abglib.variants import variant_runner
+    from abglib import methods, track
+    from abglib.bench.metrics import evaluate_cell
+    from abglib.bench.variants import variant_runner
 
     z = np.cumsum(np.random.default_rng(4).normal(size=(3, 40)), axis=-1)
     # M1 is the Benedict-Bordner tracker from the two-point start (seed 001, eqs 9-10, 23)
@@ -156,7 +154,7 @@ def test_alwagih_methods_registered_when_present():
 
 def test_figure_curve_specs_use_the_variant_rules():
     from abglib import design
-    from abglib.pipeline import gains_from_spec
+    from abglib.reporting.pipeline import gains_from_spec
 
     assert gains_from_spec({"design": "qd", "m": 21}) == design.qd(21.0)
     assert gains_from_spec({"design": "qd", "alpha": 0.3}) == design.qd(design.qd_m_from_alpha(0.3))

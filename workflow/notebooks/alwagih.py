@@ -294,7 +294,7 @@ display(comparison)
 
 # %%
 if provenance is not None:
-    from abglib.provenance import to_markdown
+    from abglib.reporting.provenance import to_markdown
 
     display(Markdown(to_markdown(provenance)))
 

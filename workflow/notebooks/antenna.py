@@ -50,7 +50,7 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
-from abglib.compare import scorecard
+from abglib.reporting.compare import scorecard
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 4)
@@ -113,7 +113,7 @@ display(scorecard([comparison]).set_index("doc"))
 # Three degrees of freedom (Fig. I.3): antenna (J_a, φ_a), driver rotor (J_d, φ_d), carriage
 # (J_f, φ_f); spring–damper k_a, b_a between antenna and rotor and k_f, b_f between carriage
 # and environment; driver damping b_d between rotor and stator; the control torque T acts
-# between rotor (+T) and stator (−T). Dimensionless form (`abglib.antenna.model`): time in
+# between rotor (+T) and stator (−T). Dimensionless form (`abglib.replications.antenna.model`): time in
 # units of 1/ω₀ with ω₀ = √(k_a/J_a) the antenna eigenfrequency, so that the text's
 # frequency ratio ω is the object's angular frequency; inertias as fractions of J_a + J_d
 # (appendix H names p_a and p_d = 1 − p_a); all dampings β_i = b_i / (2√(k_a J_a)) on one
@@ -136,9 +136,9 @@ display(params)
 # %% [markdown]
 # ## 2. The LQ tracker and the preview laws (ch. 2, 4; app. B–E)
 #
-# `abglib.antenna.lq` implements the Riccati equation 2.12 (by the source's iteration), the
+# `abglib.replications.antenna.lq` implements the Riccati equation 2.12 (by the source's iteration), the
 # matrices 2.16–2.21, the exact finite-horizon law 2.22–2.28, the truncated law 2.36–2.37
-# and the preview-step count 2.35; `abglib.antenna.preview` the infinite-preview law 4.5
+# and the preview-step count 2.35; `abglib.replications.antenna.preview` the infinite-preview law 4.5
 # through the Stein equation X = A_gᵀ X A_t + C_g C_t A_t (app. E). The checks on the
 # reconstructed model (the tests repeat them with python-control and on random systems):
 
@@ -150,7 +150,7 @@ display(verdicts("Ch. 2", "Ch. 4"))
 # ## 3. The object model: Taylor prediction (ch. 3, Fig. I.4)
 #
 # z_i = sin(i/100) (Δt = 0.01) predicted from i = 50 with the Taylor model of orders 1–5
-# (`abglib.antenna.objectmodel`; the model route C_t A_tᵏ x_t,0 and the closed-form Taylor
+# (`abglib.replications.antenna.objectmodel`; the model route C_t A_tᵏ x_t,0 and the closed-form Taylor
 # polynomial agree to 1e-12). Model-independent, judged exactly.
 
 # %%
@@ -267,7 +267,7 @@ display(comparison)
 
 # %%
 if provenance is not None:
-    from abglib.provenance import to_markdown
+    from abglib.reporting.provenance import to_markdown
 
     display(Markdown(to_markdown(provenance)))
 

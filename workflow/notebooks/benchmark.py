@@ -14,7 +14,7 @@
 # # Benchmark matrix: every tracker variant on every dataset scenario
 #
 # Each *variant* is one entry of `config.yaml` (`benchmark: variants:`) naming a gain-design
-# rule of `abglib.variants` and its parameters; each *scenario* is a simulated radar dataset
+# rule of `abglib.bench.variants` and its parameters; each *scenario* is a simulated radar dataset
 # (`datasets: scenarios:`, Parquet + manifest, built by the `dataset` rule). The pipeline runs
 # every variant on every scenario over the scenario's Monte Carlo runs (one Snakemake job per
 # cell) and scores it against the truth. This notebook only reads what those jobs computed.
@@ -73,7 +73,7 @@ display(
 # **Measured VRF.** The mean square of the noise part after the variant's own transient has
 # decayed (pole radius^n < 10⁻⁸), divided by σ², against the exact VRF (`abglib.analysis.vrf`
 # for white noise; for AR(1) noise the Lyapunov equation of the tracker augmented with the
-# noise's shaping filter, `abglib.metrics.coloured_vrf`). Samples within a run are correlated,
+# noise's shaping filter, `abglib.bench.metrics.coloured_vrf`). Samples within a run are correlated,
 # so the confidence interval comes from the spread of the per-run estimates across runs
 # (Student t, runs − 1 degrees of freedom), never from the pooled samples. The build check
 # uses a simultaneous interval: Bonferroni over every check of the matrix at a family-wise
@@ -255,6 +255,6 @@ else:
 
 # %%
 if provenance:
-    from abglib.provenance import to_markdown
+    from abglib.reporting.provenance import to_markdown
 
     display(Markdown(to_markdown(provenance)))

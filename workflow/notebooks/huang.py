@@ -46,7 +46,7 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
-from abglib.compare import non_matches, scorecard
+from abglib.reporting.compare import non_matches, scorecard
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 5)
@@ -130,7 +130,7 @@ display(non_matches(comparison))
 # Eq 1 (smoothing) and eq 2 (prediction) define the α-β-γ loop. As printed, eq 2 predicts
 # R_p = R_s + T R′_s + T² R″_s and R′_p = R′_s + T R′_s; the transfer function eq 3 and
 # the characteristic polynomial eq 4 follow only from R_p = R_s + T R′_s + **T²R″_s/2** and
-# R′_p = R′_s + T **R″_s**. `abglib.huang.run_eqs_1_2` transcribes eqs 1–2 literally, with a
+# R′_p = R′_s + T **R″_s**. `abglib.replications.huang.run_eqs_1_2` transcribes eqs 1–2 literally, with a
 # switch for the T²/2: with it the loop equals `abglib.track` on the converted gains
 # exactly; with the printed T² it does not. Eq 3's last numerator term, printed "a", is α
 # (and "−a" in eq 6 is −α): with that reading eqs 3, 4 and 6 are exactly X_p/X of the
@@ -148,7 +148,7 @@ display(verdicts("eq 6"))
 # **One-sided or two-sided.** Eq 8 writes B_n = (1/2π)∫_{−∞}^{∞}|H(ω)|² dω; for a sampled loop
 # the band is |ω| ≤ π/T and |H|² is even, so this is twice (1/2π)∫_0^{π/T}|H|²dω = Σh²/(2T).
 # The factor disappears between eqs 8 and 9 (z⁻¹dz = 2dw/(1 − w²) gives 1/(πT), eq 9 prints
-# 1/(2πT)), and eqs 9–14 are one-sided. `abglib.huang.enbw_eq8_two_sided` integrates eq 8
+# 1/(2πT)), and eqs 9–14 are one-sided. `abglib.replications.huang.enbw_eq8_two_sided` integrates eq 8
 # as printed: exactly 2× (table below, column `eq8_two_sided`).
 #
 # **Eq 14** (α-β), B_n = (2β + αβ + 2α²)/(2T(4α − 2α² − αβ)), is exactly VRF_xp/(2T).
@@ -157,7 +157,7 @@ display(verdicts("eq 6"))
 # corrections: (i) the constant of the sextic in u is K₂/K₅ = γ_H²/(4 − 2α − β)², not K₂;
 # (ii) eq 11's bracket is A/√B + C/√D + E/√F; (iii) in eq 13, b² = K₄ + 2a√(K₂/K₅) with the
 # Hurwitz coefficient a (not the gain α), and the fraction is divided by √(K₂/K₅). Read
-# literally (`abglib.huang.enbw_huang_eq13_as_printed`), eq 13 gives values 17 to 10⁷ times
+# literally (`abglib.replications.huang.enbw_huang_eq13_as_printed`), eq 13 gives values 17 to 10⁷ times
 # too small.
 #
 # **Routes compared** on every gain set of Tables 1–2 (printed, where stable, and the gains
@@ -274,7 +274,7 @@ display(verdicts("Introduction"))
 # with τ = 1 µs, c the speed of light, k = 1.4, (S/N)₀ = 12 dB = 15.85, F_r = 300 Hz:
 # σ = 107.1 m · √(B_n/4755 Hz). It is the single-pulse error τc/(2k√(2(S/N)₀)) = 19.0 m of
 # Barton's 2E/N₀ form, smoothed by a loop of one-sided ENBW B_n (σ² = σ_m² · 2 B_n T;
-# `abglib.huang.measurement_sigma`, which the simulations below use as the measurement
+# `abglib.replications.huang.measurement_sigma`, which the simulations below use as the measurement
 # noise). At 40 Hz it gives 9.82 m, and σ ≤ 7 m needs B_n ≤ 20.3 Hz. The paper's "under
 # 40 Hz" is what the formula gives with Barton's 2E/N₀ under the root (40.6 Hz, σ(40 Hz) =
 # 6.94 m) — equivalently the printed formula with the *two-sided* ENBW of eq 8. Both curves:
@@ -383,7 +383,7 @@ display(comparison)
 
 # %%
 if provenance is not None:
-    from abglib.provenance import to_markdown
+    from abglib.reporting.provenance import to_markdown
 
     display(Markdown(to_markdown(provenance)))
 

@@ -34,7 +34,7 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
-from abglib.compare import non_matches, scorecard
+from abglib.reporting.compare import non_matches, scorecard
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 6)
@@ -206,7 +206,7 @@ display(comparison)
 
 # %%
 if provenance is not None:
-    from abglib.provenance import to_markdown
+    from abglib.reporting.provenance import to_markdown
 
     display(Markdown(to_markdown(provenance)))
 

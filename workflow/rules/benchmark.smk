@@ -6,8 +6,8 @@
 
 import re
 
-from abglib.benchmark import n_vrf_checks
-from abglib.variants import variant_gains, variant_rule
+from abglib.bench.benchmark import n_vrf_checks
+from abglib.bench.variants import variant_gains, variant_rule
 
 BENCH = config.get("benchmark", {})
 BENCH_VARIANTS = BENCH.get("variants", {})

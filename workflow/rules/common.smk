@@ -3,7 +3,7 @@
 from pathlib import Path
 
 import abglib
-from abglib.pipeline import config_errors, library_hash, prepend_pythonpath
+from abglib.reporting.pipeline import config_errors, library_hash, prepend_pythonpath
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
@@ -168,3 +168,15 @@ def all_targets():
     for name in DATASET_SCENARIOS:
         targets.extend(dataset_files(name))
     return targets
+
+
+def doc_config(doc, *extra):
+    """What a document's study reads: its own config section and the ``extra`` top-level
+    sections, as one mapping (a rule param, so that a change to them reruns the rule)."""
+    return {k: config[k] for k in (doc, *extra) if k in config}
+
+
+def reproduce_outputs(doc, tables):
+    """Named outputs of a ``<doc>_reproduce`` rule: every study table, the comparison and
+    the robustness sweep, under ``results/<doc>/``."""
+    return {t: f"results/{doc}/{t}.csv" for t in [*tables, "comparison", "robustness"]}

@@ -1,10 +1,10 @@
-# Simulated radar datasets (abglib.datasets): one Parquet file and one JSON manifest per
+# Simulated radar datasets (abglib.bench.datasets): one Parquet file and one JSON manifest per
 # scenario of config["datasets"]["scenarios"]. Other stages take their inputs through
 # dataset_files(name) (common.smk).
 
 
 # The job is tiny (milliseconds of numpy), so it runs inside Snakemake (run:) instead of
-# paying a Python start-up per scenario; the science is abglib.datasets.
+# paying a Python start-up per scenario; the science is abglib.bench.datasets.
 rule dataset:
     output:
         parquet="results/datasets/{scenario}.parquet",
@@ -17,7 +17,7 @@ rule dataset:
         library=LIBRARY_HASH,
         spec=lambda wildcards: DATASET_SCENARIOS[wildcards.scenario],
     run:
-        from abglib import datasets
+        from abglib.bench import datasets
 
         ds = datasets.generate(wildcards.scenario, params.spec)
         datasets.write(ds, output.parquet, output.manifest)

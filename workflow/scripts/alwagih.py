@@ -1,8 +1,9 @@
 """Al-Wagih & Abdulla (seed 001): the five methods on the reconstructed experiments.
 
 Reads the ten datasets (five white-noise, five coloured-noise experiments), runs M1-M5,
-the causal M5 and two Kalman designs on every Monte Carlo run (abglib.alwagih), and writes
-under ``results/alwagih/``: the paper's Tables 1-2 on one realisation (``table1.csv``,
+the causal M5 and two Kalman designs on every Monte Carlo run
+(abglib.replications.alwagih), and writes under
+``results/alwagih/``: the paper's Tables 1-2 on one realisation (``table1.csv``,
 ``table2.csv``), their Monte Carlo means with confidence intervals (``mc_rmse.csv``),
 Tables 3-4 and the paired t-tests (``tables34.csv``, ``ttests.csv``), Tables 5-6
 (``tables56.csv``), the printed Tables 3-6 recomputed from the printed Tables 1-2
@@ -14,11 +15,12 @@ alternatives of every published key (``reproduced.csv``, ``alternatives.csv``).
 import numpy as np
 import pandas as pd
 
-from abglib import alwagih, datasets
-from abglib.alwagih import BASES, COMPARED, PAPER_METHODS
 from abglib.analysis import is_stable, poles, stable_alwagih_eq12_14
-from abglib.compare import format_number, parse_printed, read_published, write_csv
-from abglib.pipeline import atomic_output, log_to
+from abglib.bench import datasets
+from abglib.replications.alwagih.study import BASES, COMPARED, PAPER_METHODS
+from abglib.replications.alwagih import study as alwagih
+from abglib.reporting.compare import format_number, parse_printed, read_published, write_csv
+from abglib.reporting.pipeline import atomic_output, log_to
 
 NOISES = {"white": ("t1", "t3", "t5"), "coloured": ("t2", "t4", "t6")}
 CONSISTENCY_SECTION = "Consistency of the printed tables"

@@ -2,13 +2,18 @@
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 PAPER = ("M1", "M2", "M3", "M4", "M5")
 
 
 def main(input, output, params) -> None:
-    from abglib.plotting import alwagih_causal, alwagih_rmse_bars, alwagih_tracks, save_figure
+    from abglib.replications.alwagih.figures import (
+        alwagih_causal,
+        alwagih_rmse_bars,
+        alwagih_tracks,
+    )
+    from abglib.reporting.plotting import save_figure
 
     tracks = pd.read_csv(input.tracks)
     summary = pd.read_csv(input.mc_rmse)

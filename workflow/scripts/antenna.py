@@ -14,7 +14,7 @@ import pandas as pd
 
 from abglib import design as gdesign
 from abglib.analysis import enbw
-from abglib.antenna import (
+from abglib.replications.antenna import (
     AntennaParams,
     design_controller,
     extended_model,
@@ -31,8 +31,8 @@ from abglib.antenna import (
     taylor_model,
     taylor_predict,
 )
-from abglib.compare import read_published, write_csv
-from abglib.pipeline import log_to
+from abglib.reporting.compare import read_published, write_csv
+from abglib.reporting.pipeline import log_to
 
 # preview lengths for the convergence check of the finite-preview gain (eq 2.37)
 PREVIEW_STEPS = (50, 100, 200, 400, 800, 1600)
@@ -513,7 +513,8 @@ def reproduced_tables(
         f"||A_g||_2 = {norm:.3g} with spectral radius "
         f"{ck['spectral radius of A_g (eq 2.16)']:.3g}: "
         "stability of A_g bounds the spectral radius, not the 2-norm; the preview-step count "
-        "is therefore taken from the powers ||A_g^n||_2 (abglib.antenna.preview_steps)",
+        "is therefore taken from the powers ||A_g^n||_2 "
+        "(abglib.replications.antenna.preview_steps)",
     )
     conv = [ck[k] for k in ck.index if k.startswith("preview gain")]
     put(

@@ -2,11 +2,12 @@
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 
 def main(input, output, params) -> None:
-    from abglib.plotting import antenna_figure, save_figure
+    from abglib.replications.antenna.figures import antenna_figure
+    from abglib.reporting.plotting import save_figure
 
     tables = {k: pd.read_csv(v) for k, v in input.items()}
     for name, path in output.items():

@@ -2,8 +2,8 @@
 
 Reads the scenario's Parquet dataset (or, when ``benchmark.runs`` overrides the Monte
 Carlo size, regenerates the scenario with that many runs from its spec, with the seed
-``benchmark.seed + <scenario seed>``), runs :func:`abglib.benchmark.run_cell`, applies
-the VRF build check (:func:`abglib.benchmark.check_cell`; Bonferroni over
+``benchmark.seed + <scenario seed>``), runs :func:`abglib.bench.benchmark.run_cell`, applies
+the VRF build check (:func:`abglib.bench.benchmark.check_cell`; Bonferroni over
 ``benchmark.family_size`` checks, which depends on nothing but the config constants and
 this cell's runs, so adding a variant reruns no other cell) and only then writes the
 CSV: a failing check fails the job and leaves no output.
@@ -11,11 +11,11 @@ CSV: a failing check fails the job and leaves no output.
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 
 def load(parquet, scenario, spec, runs, seed):
-    from abglib import datasets
+    from abglib.bench import datasets
 
     if runs:
         return datasets.generate(scenario, {**spec, "runs": int(runs)}, seed=int(seed))
@@ -23,7 +23,7 @@ def load(parquet, scenario, spec, runs, seed):
 
 
 def cell_table(dataset, variant, params) -> pd.DataFrame:
-    from abglib.benchmark import run_cell
+    from abglib.bench.benchmark import run_cell
 
     return run_cell(
         dataset,
@@ -37,9 +37,9 @@ def cell_table(dataset, variant, params) -> pd.DataFrame:
 
 
 def main(input, output, params, wildcards, logger) -> None:
-    from abglib.benchmark import check_cell
-    from abglib.compare import write_csv
-    from abglib.metrics import fail_threshold
+    from abglib.bench.benchmark import check_cell
+    from abglib.bench.metrics import fail_threshold
+    from abglib.reporting.compare import write_csv
 
     ds = load(input.parquet, wildcards.scenario, params.scenario_spec, params.runs, params.seed)
     logger.info("%s on %s: %d runs x %d samples", wildcards.variant, ds.name, ds.runs, ds.n_samples)

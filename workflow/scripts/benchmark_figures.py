@@ -2,11 +2,12 @@
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 
 def main(input, output, params) -> None:
-    from abglib.plotting import benchmark_heatmap, save_figure, tradeoff_figure
+    from abglib.bench.figures import benchmark_heatmap, tradeoff_figure
+    from abglib.reporting.plotting import save_figure
 
     league = pd.read_csv(input.league)
     save_figure(benchmark_heatmap(league, params.rank_by), output.heatmap, params.dpi)

@@ -2,12 +2,12 @@
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 
 def variants_table(specs) -> pd.DataFrame:
     """One row per configured variant: rule, family, source, parameters as given."""
-    from abglib.variants import variant_rule
+    from abglib.bench.variants import variant_rule
 
     rows = []
     for name, spec in specs.items():
@@ -26,9 +26,9 @@ def variants_table(specs) -> pd.DataFrame:
 
 
 def main(input, output, params) -> None:
-    from abglib.benchmark import league_table, tradeoff_table
-    from abglib.compare import write_csv
-    from abglib.metrics import fail_threshold
+    from abglib.bench.benchmark import league_table, tradeoff_table
+    from abglib.bench.metrics import fail_threshold
+    from abglib.reporting.compare import write_csv
 
     cells = [pd.read_csv(p) for p in input.cells]
     runs = min(int(c["runs"].iloc[0]) for c in cells)

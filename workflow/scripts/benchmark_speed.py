@@ -9,7 +9,7 @@ import importlib.util
 
 import pandas as pd
 
-from abglib.pipeline import atomic_output, log_to
+from abglib.reporting.pipeline import atomic_output, log_to
 
 COLUMNS = ["case", "filter", "implementation", "samples_per_s", "ratio_vs_filterpy"]
 

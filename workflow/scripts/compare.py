@@ -1,9 +1,9 @@
 """Build ``results/<doc>/comparison.csv`` (CONTRACTS.md §3) from the transcribed published
-numbers, the reproduced values and the alternatives (see :mod:`abglib.compare`)."""
+numbers, the reproduced values and the alternatives (see :mod:`abglib.reporting.compare`)."""
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 
 def _read(path) -> pd.DataFrame:
@@ -11,7 +11,7 @@ def _read(path) -> pd.DataFrame:
 
 
 def main(input, output, params) -> None:
-    from abglib.compare import build_comparison, read_published, write_csv
+    from abglib.reporting.compare import build_comparison, read_published, write_csv
 
     alternatives = _read(input.alternatives)
     alternatives["value"] = pd.to_numeric(alternatives["value"])

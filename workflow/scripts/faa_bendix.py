@@ -13,10 +13,16 @@ comparison rule joins with the published numbers (``reproduced.csv``,
 import numpy as np
 import pandas as pd
 
-from abglib import Gains, bendix, design
+from abglib import Gains, design
 from abglib.analysis import vrf
-from abglib.compare import parse_printed, read_published, tolerance_from_printed, write_csv
-from abglib.pipeline import log_to
+from abglib.replications.faa_bendix import program as bendix
+from abglib.reporting.compare import (
+    parse_printed,
+    read_published,
+    tolerance_from_printed,
+    write_csv,
+)
+from abglib.reporting.pipeline import log_to
 
 TABLES = ("memo", "captions")
 

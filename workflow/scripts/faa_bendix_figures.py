@@ -2,12 +2,13 @@
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 
 def main(input, output, params) -> None:
-    from abglib import bendix
-    from abglib.plotting import response_grid, save_figure, stability_triangle
+    from abglib.replications.faa_bendix import program as bendix
+    from abglib.replications.faa_bendix.figures import response_grid, stability_triangle
+    from abglib.reporting.plotting import save_figure
 
     resp = pd.read_csv(input.responses)
     for kind in bendix.INPUTS:

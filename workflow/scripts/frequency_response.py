@@ -9,7 +9,7 @@ import numpy as np
 import pandas as pd
 
 from abglib.analysis import frequency_response
-from abglib.pipeline import curve_label, gains_from_spec, log_to, wt_grid
+from abglib.reporting.pipeline import curve_label, gains_from_spec, log_to, wt_grid
 
 
 def response_table(figure: dict, grids: dict) -> pd.DataFrame:
@@ -41,7 +41,7 @@ def response_table(figure: dict, grids: dict) -> pd.DataFrame:
 
 
 def main(output, params) -> None:
-    from abglib.compare import write_csv
+    from abglib.reporting.compare import write_csv
 
     write_csv(response_table(params.figure, params.grids), output.data, params.digits)
 

@@ -13,7 +13,7 @@ comparison rule joins with the published numbers (``reproduced.csv``,
 import numpy as np
 import pandas as pd
 
-from abglib import Gains, design, huang
+from abglib import Gains, design
 from abglib.analysis import (
     enbw,
     enbw_huang_eq8_13,
@@ -29,9 +29,10 @@ from abglib.analysis import (
     transfer_function,
     transfer_function_huang,
 )
-from abglib.compare import read_published, write_csv
 from abglib.conventions import from_huang, to_huang
-from abglib.pipeline import log_to
+from abglib.replications.huang import study as huang
+from abglib.reporting.compare import read_published, write_csv
+from abglib.reporting.pipeline import log_to
 from abglib.simulate import white_noise
 
 ORDERS = {"ab": 2, "abg": 3}
@@ -64,7 +65,7 @@ def printed_cells(published: pd.DataFrame) -> list[dict]:
 
 def tables12(cells, dt, mc) -> pd.DataFrame:
     """Every cell: ENBW by each route, stability, the rule at the printed xi and at the
-    nominal ENBW (:func:`abglib.huang.table_row`), plus a Monte Carlo ENBW."""
+    nominal ENBW (:func:`abglib.replications.huang.table_row`), plus a Monte Carlo ENBW."""
     rows = []
     for i, c in enumerate(cells):
         row = {"cell": c["base"]}

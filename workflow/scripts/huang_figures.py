@@ -2,18 +2,18 @@
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 
 def main(input, output, params) -> None:
-    from abglib import huang
     from abglib.analysis import steady_state_lag_huang
-    from abglib.plotting import (
+    from abglib.replications.huang import study as huang
+    from abglib.replications.huang.figures import (
         huang_bandwidth_figure,
         huang_thermal_figure,
         huang_track_figure,
-        save_figure,
     )
+    from abglib.reporting.plotting import save_figure
 
     radar, sim = params.cfg["radar"], params.cfg["simulation"]
     dt = 1.0 / radar["fr_hz"]

@@ -2,11 +2,11 @@
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 
 def main(input, output, params) -> None:
-    from abglib.plotting import frequency_response_figure, save_figure
+    from abglib.reporting.plotting import frequency_response_figure, save_figure
 
     data = pd.read_csv(input.data)
     fig = frequency_response_figure(data, params.axes, params.caption)

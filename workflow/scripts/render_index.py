@@ -2,12 +2,12 @@
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 
 def main(input, output, params, config) -> None:
-    from abglib import provenance
-    from abglib.report import write_index, write_text
+    from abglib.reporting import provenance
+    from abglib.reporting.render import write_index, write_text
 
     card = pd.read_csv(input.scorecard)
     docs = [

@@ -9,7 +9,7 @@ import os
 import shutil
 from pathlib import Path
 
-from abglib.pipeline import atomic_output, log_to
+from abglib.reporting.pipeline import atomic_output, log_to
 
 
 def copy_atomic(src, dst) -> None:
@@ -19,8 +19,8 @@ def copy_atomic(src, dst) -> None:
 
 
 def main(input, output, params, config, logger) -> None:
-    from abglib import provenance
-    from abglib.report import render_notebook
+    from abglib.reporting import provenance
+    from abglib.reporting.render import render_notebook
 
     figures = {Path(p).stem: str(p) for p in input.figures}
     tables = {Path(p).stem: str(p) for p in input.tables}

@@ -2,11 +2,11 @@
 
 import pandas as pd
 
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 
 def main(input, output, params) -> None:
-    from abglib.compare import scorecard, write_csv
+    from abglib.reporting.compare import scorecard, write_csv
 
     tables = [pd.read_csv(p, dtype=str, keep_default_na=False) for p in input.comparisons]
     write_csv(scorecard(tables), output.scorecard, params.digits)

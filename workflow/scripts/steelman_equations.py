@@ -17,7 +17,7 @@ import pandas as pd
 import abglib
 from abglib import analysis as A
 from abglib import design
-from abglib.pipeline import log_to
+from abglib.reporting.pipeline import log_to
 
 # the quantity each printed variance/transient form names, and the exact outputs it may
 # equal instead (smoothed is what seed 000 defines: "steady-state variance in position
@@ -321,7 +321,7 @@ def stability_table(cfg: dict) -> pd.DataFrame:
 
 
 def main(output, params) -> None:
-    from abglib.compare import write_csv
+    from abglib.reporting.compare import write_csv
 
     write_csv(equation_table(params.checks, params.eq53_exponents), output.equations, params.digits)
     write_csv(stability_table(params.checks), output.stability, params.digits)

@@ -8,7 +8,8 @@ How to add an explanation
 -------------------------
 Append one :class:`Alt` to :data:`ALTERNATIVES`: the key it explains, what is computed
 instead (in words), a function of the context ``c`` (a :class:`Context`) returning the
-value, and the report section that demonstrates it. :func:`abglib.compare.build_comparison`
+value, and the report section that demonstrates it.
+:func:`abglib.reporting.compare.build_comparison`
 marks the row ``explained`` only if that value reproduces the printed number within
 tolerance; otherwise the row stays a ``mismatch`` and the alternative is still listed in
 ``alternatives.csv`` (and the report) as a reading that was tried.
@@ -25,7 +26,7 @@ import pandas as pd
 from abglib import analysis as A
 from abglib import design
 from abglib.gains import Gains
-from abglib.pipeline import log_to, wt_grid
+from abglib.reporting.pipeline import log_to, wt_grid
 
 # report sections cited by notes (headings of workflow/notebooks/steelman1978.py)
 SEC_GAINS = "2. Tables 1 and 2: the gains of Figures 5 and 6"
@@ -370,7 +371,7 @@ def tables345(c: Context) -> pd.DataFrame:
 
 
 def main(input, output, params) -> None:
-    from abglib.compare import write_csv
+    from abglib.reporting.compare import write_csv
 
     c = Context(params.cfg, pd.read_csv(input.stability))
     rep = reproduced_values(c)

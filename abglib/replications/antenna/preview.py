@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.linalg
 
-from .._checks import AbglibValueError
+from ..._checks import AbglibValueError
 from .lq import TrackerMatrices
 
 __all__ = ["preview_gain", "preview_series", "sine_model", "stein_solve"]

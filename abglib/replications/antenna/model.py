@@ -31,7 +31,7 @@ from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
-from .._checks import AbglibValueError
+from ..._checks import AbglibValueError
 
 __all__ = ["PARAMETER_NAMES", "AntennaParams", "continuous_model"]
 

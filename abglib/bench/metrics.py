@@ -39,11 +39,11 @@ import numpy as np
 import scipy.linalg
 import scipy.stats
 
-from ._checks import AbglibValueError, check_in_range, check_positive
-from .analysis import is_stable, pole_radius, vrf
-from .analysis._statespace import state_space
-from .engine import track
-from .gains import Gains, require_gains
+from .._checks import AbglibValueError, check_in_range, check_positive
+from ..analysis import is_stable, pole_radius, vrf
+from ..analysis._statespace import state_space
+from ..engine import track
+from ..gains import Gains, require_gains
 
 __all__ = [
     "OUTPUTS",

@@ -16,8 +16,8 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 import pandas as pd
 
+from .._checks import AbglibValueError
 from . import metrics, variants
-from ._checks import AbglibValueError
 
 __all__ = [
     "check_cell",

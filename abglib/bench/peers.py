@@ -27,12 +27,12 @@ import pandas as pd
 import scipy.signal
 import scipy.stats
 
-from . import design
-from .analysis import frequency_response, steady_state_lag, transfer_function, vrf
-from .analysis._statespace import state_space
-from .conventions import from_filterpy, to_filterpy
-from .engine import track
-from .gains import Gains
+from .. import design
+from ..analysis import frequency_response, steady_state_lag, transfer_function, vrf
+from ..analysis._statespace import state_space
+from ..conventions import from_filterpy, to_filterpy
+from ..engine import track
+from ..gains import Gains
 
 __all__ = ["GAIN_SETS", "agreement_table", "direct_vrf", "monte_carlo_vrf"]
 
@@ -307,7 +307,7 @@ def _helper_rows(rtol: float) -> list[dict]:
         least_squares_parameters,
     )
 
-    from .analysis import poles
+    from ..analysis import poles
 
     rows = []
     for th in (0.3, 0.8):

@@ -23,11 +23,11 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ._checks import AbglibValueError, check_in_range, check_positive
-from .analysis import is_stable, poles, steady_state_lag, vrf
-from .engine import track
-from .gains import Gains
-from .simulate import bendix_impulse, bendix_ramp, rng_from
+from ..._checks import AbglibValueError, check_in_range, check_positive
+from ...analysis import is_stable, poles, steady_state_lag, vrf
+from ...engine import track
+from ...gains import Gains
+from ...simulate import bendix_impulse, bendix_ramp, rng_from
 
 __all__ = [
     "GRAPHS",

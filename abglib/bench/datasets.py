@@ -57,8 +57,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ._checks import AbglibValueError, check_finite, check_in_range, check_positive
-from .simulate import ar1_noise, sample_times, white_noise
+from .._checks import AbglibValueError, check_finite, check_in_range, check_positive
+from ..simulate import ar1_noise, sample_times, white_noise
 
 __all__ = [
     "BASE_COLUMNS",
@@ -416,8 +416,8 @@ def generate(name: str, spec: Mapping, seed: int | None = None) -> Dataset:
     AbglibValueError
         A missing, unknown or out-of-range setting, named by its key.
     """
-    from . import __version__
-    from .provenance import config_hash
+    from .. import __version__
+    from ..reporting.provenance import config_hash
 
     if not isinstance(name, str) or not name:
         raise AbglibValueError(f"name must be a non-empty string, got {name!r}")
@@ -524,7 +524,7 @@ def write(dataset: Dataset, parquet_path, manifest_path) -> None:
     the same dataset always gives byte-identical files (no timestamps, no pandas
     metadata, fixed compression).
     """
-    from .pipeline import atomic_output
+    from ..reporting.pipeline import atomic_output
 
     _, pq = _arrow()
     table = _table(dataset)

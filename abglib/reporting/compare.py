@@ -39,7 +39,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from ._checks import AbglibValueError
+from .._checks import AbglibValueError
 
 __all__ = [
     "ALTERNATIVE_COLUMNS",
@@ -52,6 +52,7 @@ __all__ = [
     "build_comparison",
     "format_number",
     "format_table",
+    "judge",
     "parse_printed",
     "read_published",
     "scorecard",
@@ -72,11 +73,13 @@ COMPARISON_COLUMNS = [
     "tolerance",
     "verdict",
     "note",
+    "depends_on",
+    "robust",
 ]
 #: Verdicts, in scorecard column order.
 VERDICTS = ["match", "mismatch", "explained", "not_reproducible"]
 #: Columns of ``results/scorecard.csv``.
-SCORECARD_COLUMNS = ["doc", *VERDICTS, "total"]
+SCORECARD_COLUMNS = ["doc", *VERDICTS, "total", "robust", "fragile"]
 #: Required columns of a transcription file ``data/published/<doc>/*.csv``.
 PUBLISHED_COLUMNS = ["key", "item", "quantity", "published", "where"]
 #: Columns of the reproduced-values table written by a document's reproducing rule.
@@ -345,62 +348,83 @@ def build_comparison(
     rows = []
     for row in published.itertuples(index=False):
         r = rep.loc[row.key]
-        value, note = r["reproduced"], _text(r.get("note", ""))
-        qualitative = not row.published.strip()
-        tol, tol_note = None, ""
-        if not qualitative:
-            tol = tolerance_from_printed(row.published)
-            if row.key in overrides:
-                ov = overrides[row.key]
-                reason = _text(ov.get("reason", ""))
-                if not reason:
-                    raise AbglibValueError(
-                        f"{doc}: tolerance override for {row.key!r} must give a reason"
-                    )
-                tol = float(ov["tolerance"])
-                tol_note = f"tolerance {format_number(tol)} ({reason})"
-        v, alt = verdict(row.published, value, tol, alts.get(row.key, ()))
-        abs_err = rel_err = None
-        if not qualitative and v != "not_reproducible":
-            pub = float(parse_printed(row.published))
-            abs_err = float(value) - pub
-            rel_err = abs_err / abs(pub) if pub != 0 else None
-        if v == "not_reproducible" and not note:
-            raise AbglibValueError(
-                f"{doc}: not-reproducible key {row.key!r} needs a note saying why"
-            )
-        if v == "explained":
-            note = (
-                f"{alt.alternative} gives {format_number(alt.value, 6)}, "
-                f"which matches the printed value; see report section '{alt.section}'"
-                + (f". {note}" if note else "")
-            )
-        elif v == "mismatch" and not note:
-            note = (
-                f"not explained: differs by {format_number(abs_err, 3)} "
-                f"({format_number(abs(abs_err) / tol, 3)} tolerances)"
-                if abs_err is not None
-                else "qualitative check does not hold"
-            )
-        elif v == "match":
-            note = note if qualitative else ""
-        if tol_note:
-            note = f"{note}; {tol_note}" if note else tol_note
-        rows.append(
-            {
-                "doc": doc,
-                "item": row.item,
-                "quantity": row.quantity,
-                "published": row.published,
-                "reproduced": _reproduced_value(value, qualitative),
-                "abs_err": abs_err,
-                "rel_err": rel_err,
-                "tolerance": tol,
-                "verdict": v,
-                "note": note,
-            }
-        )
+        out = judge(doc, row, r["reproduced"], r.get("note", ""), alts.get(row.key, ()), overrides)
+        for col in ("depends_on", "robust"):
+            out[col] = _text(r.get(col, ""))
+        rows.append(out)
     return pd.DataFrame(rows, columns=COMPARISON_COLUMNS)
+
+
+def judge(doc: str, row, value, note, alternatives=(), overrides=None) -> dict:
+    """One row of ``comparison.csv`` (without ``depends_on`` and ``robust``).
+
+    Parameters
+    ----------
+    doc : str
+        Document key.
+    row
+        The published row (attributes ``key, item, quantity, published``).
+    value : float, bool or None
+        The reproduced value (a bool for a qualitative claim; None when not reproducible).
+    note : str
+        The evidence; required when ``value`` is missing.
+    alternatives : iterable of Alternative
+        Alternative readings (an ``explained`` verdict names the first that matches).
+    overrides : mapping, optional
+        ``{key: {"tolerance": float, "reason": str}}``.
+    """
+    overrides = overrides or {}
+    note = _text(note)
+    qualitative = not row.published.strip()
+    tol, tol_note = None, ""
+    if not qualitative:
+        tol = tolerance_from_printed(row.published)
+        if row.key in overrides:
+            ov = overrides[row.key]
+            reason = _text(ov.get("reason", ""))
+            if not reason:
+                raise AbglibValueError(
+                    f"{doc}: tolerance override for {row.key!r} must give a reason"
+                )
+            tol = float(ov["tolerance"])
+            tol_note = f"tolerance {format_number(tol)} ({reason})"
+    v, alt = verdict(row.published, value, tol, alternatives)
+    abs_err = rel_err = None
+    if not qualitative and v != "not_reproducible":
+        pub = float(parse_printed(row.published))
+        abs_err = float(value) - pub
+        rel_err = abs_err / abs(pub) if pub != 0 else None
+    if v == "not_reproducible" and not note:
+        raise AbglibValueError(f"{doc}: not-reproducible key {row.key!r} needs a note saying why")
+    if v == "explained":
+        note = (
+            f"{alt.alternative} gives {format_number(alt.value, 6)}, "
+            f"which matches the printed value; see report section '{alt.section}'"
+            + (f". {note}" if note else "")
+        )
+    elif v == "mismatch" and not note:
+        note = (
+            f"not explained: differs by {format_number(abs_err, 3)} "
+            f"({format_number(abs(abs_err) / tol, 3)} tolerances)"
+            if abs_err is not None
+            else "qualitative check does not hold"
+        )
+    elif v == "match":
+        note = note if qualitative else ""
+    if tol_note:
+        note = f"{note}; {tol_note}" if note else tol_note
+    return {
+        "doc": doc,
+        "item": row.item,
+        "quantity": row.quantity,
+        "published": row.published,
+        "reproduced": _reproduced_value(value, qualitative),
+        "abs_err": abs_err,
+        "rel_err": rel_err,
+        "tolerance": tol,
+        "verdict": v,
+        "note": note,
+    }
 
 
 def _reproduced_value(value, qualitative: bool):
@@ -421,7 +445,9 @@ def _index_unique(df: pd.DataFrame, name: str) -> pd.DataFrame:
 
 
 def scorecard(comparisons: Iterable[pd.DataFrame]) -> pd.DataFrame:
-    """One row per document: the count of each verdict and the total (contract section 3)."""
+    """One row per document: the count of each verdict and the total, and how many rows
+    that depend on assumed inputs keep their verdict across the plausible ranges
+    (``robust``) or flip (``fragile``) (contract section 3)."""
     rows = []
     for comp in comparisons:
         docs = comp["doc"].unique()
@@ -433,6 +459,9 @@ def scorecard(comparisons: Iterable[pd.DataFrame]) -> pd.DataFrame:
             raise AbglibValueError(f"verdict must be one of {VERDICTS}, got {unknown}")
         row = {"doc": docs[0], **{v: int(counts.get(v, 0)) for v in VERDICTS}}
         row["total"] = int(len(comp))
+        robust = comp["robust"].astype(str).str.lower() if "robust" in comp else pd.Series([])
+        row["robust"] = int((robust == "true").sum())
+        row["fragile"] = int((robust == "false").sum())
         rows.append(row)
     return pd.DataFrame(rows, columns=SCORECARD_COLUMNS).sort_values("doc", ignore_index=True)
 

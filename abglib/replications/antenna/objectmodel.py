@@ -15,7 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._checks import AbglibValueError, check_positive
+from ..._checks import AbglibValueError, check_positive
 from .discretize import zoh
 
 __all__ = ["sine_state", "taylor_model", "taylor_predict"]

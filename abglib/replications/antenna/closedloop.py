@@ -30,9 +30,9 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._checks import AbglibValueError, check_positive
-from ..analysis._statespace import state_space
-from ..gains import Gains
+from ..._checks import AbglibValueError, check_positive
+from ...analysis._statespace import state_space
+from ...gains import Gains
 from .discretize import zoh
 from .kalman import extended_model, kalman_gains
 from .lq import TrackerMatrices, tracker_matrices

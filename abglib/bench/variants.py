@@ -34,7 +34,7 @@ steady_state_kalman q, r, [order=2], [model="piecewise_constant"]          stead
 gains               alpha, beta, [gamma=0]                                 Gains (explicit)
 ==================  =====================================================  ===============
 
-When :mod:`abglib.methods` (seed 001, Al-Wagih & Abdulla) is present, its methods are
+The methods of :mod:`abglib.methods` (seed 001, Al-Wagih & Abdulla) are
 registered too, as rules of kind ``"method"`` scored on their one-step predictions:
 ``alwagih_m1`` (alpha0), ``alwagih_m2``, ``alwagih_m3`` ([w_start, w_stop, w_n]),
 ``alwagih_m4`` (alpha0, window, [grid_start, grid_stop, grid_n]), ``alwagih_m5``
@@ -43,16 +43,15 @@ registered too, as rules of kind ``"method"`` scored on their one-step predictio
 
 from __future__ import annotations
 
-import importlib.util
 import numbers
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import design
-from ._checks import AbglibValueError
-from .gains import Gains
+from .. import design
+from .._checks import AbglibValueError
+from ..gains import Gains
 
 __all__ = [
     "RULES",
@@ -370,16 +369,14 @@ def _linspace(p, prefix):
 
 
 def _register_alwagih_methods() -> None:
-    """Register methods M1-M5 of seed 001 (:mod:`abglib.methods`) when that module exists.
+    """Register methods M1-M5 of seed 001 (:mod:`abglib.methods`).
 
     Each runs on the whole batch of runs and returns the one-step predictions only
     (seed 001 scores ``x_pred``, eq 26); grids are ``<name>_start, _stop, _n``
     (:func:`numpy.linspace`); M5's ``causal`` is 0 (the paper's rule, which looks at the
     current measurement) or 1 (past innovations only, over ``memory`` steps).
     """
-    if importlib.util.find_spec(f"{__package__}.methods") is None:
-        return
-    from . import methods as m
+    from .. import methods as m
 
     fam = "Al-Wagih & Abdulla (seed 001)"
     for rule in (

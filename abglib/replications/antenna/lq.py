@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._checks import AbglibValueError, check_positive
+from ..._checks import AbglibValueError, check_positive
 
 __all__ = [
     "TrackerMatrices",

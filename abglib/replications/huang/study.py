@@ -25,8 +25,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ._checks import AbglibValueError, check_finite, check_positive, scalar_or_array
-from .analysis import (
+from ..._checks import AbglibValueError, check_finite, check_positive, scalar_or_array
+from ...analysis import (
     enbw,
     enbw_huang_eq8_13,
     enbw_huang_eq14,
@@ -35,12 +35,12 @@ from .analysis import (
     stable_huang_eq5,
     stable_jury_steelman,
 )
-from .analysis._enbw import _huang_k
-from .conventions import from_huang, to_huang
-from .design import huang_for_enbw, huang_type1, huang_type2
-from .engine import track
-from .gains import Gains
-from .simulate import polynomial_track, sample_times, white_noise
+from ...analysis._enbw import _huang_k
+from ...conventions import from_huang, to_huang
+from ...design import huang_for_enbw, huang_type1, huang_type2
+from ...engine import track
+from ...gains import Gains
+from ...simulate import polynomial_track, sample_times, white_noise
 
 __all__ = [
     "C_LIGHT",
@@ -228,7 +228,7 @@ def enbw_eq8_two_sided(gains: Gains, dt=1.0) -> float:
     """
     import scipy.integrate
 
-    from .analysis import frequency_response, require_stable
+    from ...analysis import frequency_response, require_stable
 
     require_stable(gains, "noise bandwidth is unbounded")
     T = float(check_positive("dt", dt))
@@ -357,7 +357,7 @@ def enbw_monte_carlo(gains: Gains, dt, runs, samples, burn_in, seed) -> tuple:
         The estimate :math:`\widehat{\mathrm{VRF}}_{x_p}/(2T)` and its standard error
         (from the spread of the per-run variances).
     """
-    from .analysis import require_stable
+    from ...analysis import require_stable
 
     require_stable(gains, "noise bandwidth is unbounded")
     T = float(check_positive("dt", dt))

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
-from .._checks import AbglibValueError, check_positive
+from ..._checks import AbglibValueError, check_positive
 
 __all__ = ["ExtendedModel", "KalmanGains", "extended_model", "kalman_gains", "kalman_riccati"]
 

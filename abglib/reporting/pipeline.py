@@ -17,8 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ._checks import AbglibValueError
-from .gains import Gains
+from .._checks import AbglibValueError
+from ..gains import Gains
 
 __all__ = [
     "atomic_output",
@@ -52,7 +52,7 @@ def gains_from_spec(spec: Mapping) -> Gains:
     ``qd``: QD tracker (seed 000, eqs 28-30) with memory ``m``, or the ``m`` that gives
     the stated alpha.
     """
-    from .variants import variant_gains
+    from ..bench.variants import variant_gains
 
     kind = spec.get("design")
     if kind not in DESIGNS:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.linalg
 
-from .._checks import AbglibValueError, check_positive
+from ..._checks import AbglibValueError, check_positive
 
 __all__ = ["zoh"]
 

@@ -20,9 +20,9 @@ from collections.abc import Mapping
 import numpy as np
 import pandas as pd
 
-from . import design, methods
-from ._checks import AbglibValueError
-from .engine import track
+from ... import design, methods
+from ..._checks import AbglibValueError
+from ...engine import track
 
 __all__ = [
     "BASES",

@@ -1,0 +1,534 @@
+"""One claim model for every source document.
+
+A *claim* is one published number or statement of a source document. Its printed side
+(``item``, ``quantity``, ``published``, ``where``) is transcribed once in
+``data/published/<doc>/*.csv``; its computing side is one declaration in
+``abglib/replications/<doc>/claims.py``::
+
+    CLAIMS = ClaimSet("huang")
+
+    @CLAIMS.claim("fig5.overranged", depends_on=("huang.gate_fraction_of_pulse",))
+    def _(s: Study) -> Result:
+        return Result(s.lag_111 > s.gate_m, f"111.1 m against a {s.gate_m:.1f} m gate")
+
+    @CLAIMS.family(r"t[12]\\.(ab|abg)\\.\\d+hz\\.enbw")   # one function, many printed keys
+    def _(s: Study, key: str) -> Result: ...
+
+A claim's function takes the document's *study* (a lazily computed object built from the
+configuration; :class:`Study`) and returns a :class:`Result`: the reproduced value (a
+number, a bool for a qualitative claim, ``None`` when not reproducible), a note, and
+any alternative readings (:class:`Reading`) that may explain a non-match.
+
+Verdicts that hinge on assumed inputs
+-------------------------------------
+``depends_on`` names the reconstructed or assumed inputs the value depends on, as dotted
+config paths (``antenna.model.beta_a``). Each such input has a *plausible range* in the
+document's config section (``<doc>.plausible.<dotted path>``: ``values: [...]`` or
+``low, high, n`` with ``scale: linear|log``, and its ``basis`` in the text).
+:func:`evaluate` recomputes the claim one input at a time over that range (the others at
+their nominal values) and judges each point with the same tolerance. The same verdict
+everywhere gives that verdict with ``robust=true``; a flip gives ``not_reproducible``,
+``robust=false`` and a note with the ranges where each verdict holds
+(``shared/CONTRACTS.md`` section 3).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import re
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from .._checks import AbglibValueError
+from ..reporting.compare import (
+    COMPARISON_COLUMNS,
+    Alternative,
+    format_number,
+    judge,
+)
+
+__all__ = [
+    "ROBUSTNESS_COLUMNS",
+    "Claim",
+    "ClaimSet",
+    "PlausibleRange",
+    "Reading",
+    "Result",
+    "Study",
+    "config_get",
+    "config_with",
+    "evaluate",
+    "plausible_ranges",
+]
+
+#: Columns of ``results/<doc>/robustness.csv``: one row per (claim, input, value) point.
+ROBUSTNESS_COLUMNS = ["key", "input", "value", "nominal", "reproduced", "verdict"]
+
+
+# --------------------------------------------------------------------------- results
+@dataclass(frozen=True)
+class Reading:
+    """An alternative reading of a printed number, computed by abglib.
+
+    ``description`` says what is computed instead (it goes into the note), ``value`` is
+    its value and ``section`` the report section that demonstrates it. A non-matching row
+    is ``explained`` when a reading reproduces the printed number within tolerance.
+    """
+
+    description: str
+    value: float
+    section: str
+
+
+@dataclass(frozen=True)
+class Result:
+    """What a claim's function returns.
+
+    Attributes
+    ----------
+    value : float, bool or None
+        The reproduced number; for a qualitative claim (empty ``published``) whether the
+        check holds; ``None`` when not reproducible (then ``note`` says why).
+    note : str
+        The evidence, in words, with the numbers behind the value.
+    readings : sequence of Reading
+        Alternative readings of the printed number (for ``explained``).
+    """
+
+    value: Any
+    note: str = ""
+    readings: Sequence[Reading] = ()
+
+
+# --------------------------------------------------------------------------- claims
+@dataclass(frozen=True)
+class Claim:
+    """The computing side of one published claim (or of a family of them).
+
+    ``pattern`` is the published key, or a regular expression that matches every key of
+    the family (:meth:`ClaimSet.family`); ``compute(study)`` (or ``compute(study, key)``
+    for a family) returns a :class:`Result`; ``depends_on`` lists the assumed inputs
+    (dotted config paths), or is a function of the key that returns them.
+    """
+
+    pattern: str
+    compute: Callable[..., Result]
+    depends_on: tuple[str, ...] | Callable[[str], Iterable[str]] = ()
+    is_family: bool = False
+
+    def matches(self, key: str) -> bool:
+        if self.is_family:
+            return re.fullmatch(self.pattern, key) is not None
+        return key == self.pattern
+
+    def inputs(self, key: str) -> tuple[str, ...]:
+        dep = self.depends_on(key) if callable(self.depends_on) else self.depends_on
+        return tuple(dict.fromkeys(dep))
+
+    def run(self, study, key: str) -> Result:
+        out = self.compute(study, key) if self.is_family else self.compute(study)
+        if not isinstance(out, Result):
+            raise AbglibValueError(
+                f"claim {key!r} must return an abglib.replications.Result, got {type(out).__name__}"
+            )
+        return out
+
+
+class ClaimSet:
+    """The claims of one document, declared with :meth:`claim` and :meth:`family`."""
+
+    def __init__(self, doc: str):
+        self.doc = doc
+        self._claims: list[Claim] = []
+
+    def claim(self, key: str, *, depends_on=()):
+        """Decorator: ``fn(study) -> Result`` computes the published key ``key``."""
+
+        def deco(fn):
+            if any(c.pattern == key and not c.is_family for c in self._claims):
+                raise AbglibValueError(f"{self.doc}: claim {key!r} is declared twice")
+            self._claims.append(Claim(key, fn, _deps(depends_on), False))
+            return fn
+
+        return deco
+
+    def family(self, pattern: str, *, depends_on=()):
+        """Decorator: ``fn(study, key) -> Result`` computes every key matching ``pattern``."""
+        re.compile(pattern)
+
+        def deco(fn):
+            self._claims.append(Claim(pattern, fn, _deps(depends_on), True))
+            return fn
+
+        return deco
+
+    def __iter__(self):
+        return iter(self._claims)
+
+    def __len__(self) -> int:
+        return len(self._claims)
+
+    def resolve(self, keys: Iterable[str]) -> dict[str, Claim]:
+        """The claim of every published key; each key must have exactly one, and each
+        declaration must match at least one key (a claim with no printed row is a bug).
+
+        Raises
+        ------
+        AbglibValueError
+            Naming the keys without a claim, with several, and the unused declarations.
+        """
+        keys = list(keys)
+        found: dict[str, Claim] = {}
+        none, many = [], []
+        for k in keys:
+            hits = [c for c in self._claims if c.matches(k)]
+            if not hits:
+                none.append(k)
+            elif len(hits) > 1:
+                many.append(k)
+            else:
+                found[k] = hits[0]
+        unused = [c.pattern for c in self._claims if not any(c.matches(k) for k in keys)]
+        if none or many or unused:
+            raise AbglibValueError(
+                f"{self.doc}: every published key needs exactly one claim; "
+                f"without a claim: {none}; with several: {many}; "
+                f"declarations matching no published key: {unused}"
+            )
+        return found
+
+    def compute(self, study, key: str) -> Result:
+        """The :class:`Result` of one published key on ``study`` (for unit tests)."""
+        hits = [c for c in self._claims if c.matches(key)]
+        if len(hits) != 1:
+            raise AbglibValueError(
+                f"{self.doc}: key {key!r} must match exactly one claim, got {len(hits)}"
+            )
+        return hits[0].run(study, key)
+
+    def depends_on(self, key: str) -> tuple[str, ...]:
+        """The assumed inputs of one published key."""
+        hits = [c for c in self._claims if c.matches(key)]
+        if len(hits) != 1:
+            raise AbglibValueError(
+                f"{self.doc}: key {key!r} must match exactly one claim, got {len(hits)}"
+            )
+        return hits[0].inputs(key)
+
+
+def _deps(depends_on):
+    if callable(depends_on):
+        return depends_on
+    if isinstance(depends_on, str):
+        return (depends_on,)
+    return tuple(depends_on)
+
+
+# --------------------------------------------------------------------------- studies
+class Study:
+    """Base of a document's study: the configuration and the published table.
+
+    A subclass computes what its claims and report tables need in
+    :func:`functools.cached_property` members, so that a claim recomputed at another
+    value of an assumed input (:func:`evaluate`) pays only for what it uses.
+    ``config`` holds the document's section under its key (``config[doc]``) and any other
+    top-level section the study reads (e.g. ``datasets``).
+    """
+
+    doc: str = ""
+
+    def __init__(self, config: Mapping, published: pd.DataFrame):
+        self.config = config
+        self.published = published
+
+    @property
+    def cfg(self) -> Mapping:
+        """The document's own config section."""
+        return self.config[self.doc]
+
+    def printed(self, key: str) -> str:
+        """The printed string of one published key."""
+        pub = self.published.set_index("key")["published"]
+        if key not in pub.index:
+            raise AbglibValueError(f"{self.doc}: no published key {key!r}")
+        return pub[key]
+
+    def tables(self) -> dict[str, pd.DataFrame]:
+        """The report tables of the study, by file stem (``results/<doc>/<stem>.csv``)."""
+        return {}
+
+
+# --------------------------------------------------------------------------- ranges
+def config_get(config: Mapping, path: str):
+    """The value at a dotted path (``'huang.radar.tau_s'``) of a nested mapping."""
+    node = config
+    for part in path.split("."):
+        if isinstance(node, Mapping) and part in node:
+            node = node[part]
+        elif isinstance(node, list) and part.isdigit() and int(part) < len(node):
+            node = node[int(part)]
+        else:
+            raise AbglibValueError(f"config has no entry {path!r} (missing {part!r})")
+    return node
+
+
+def config_with(config: Mapping, path: str, value) -> dict:
+    """A deep copy of ``config`` with the dotted ``path`` set to ``value``."""
+    config_get(config, path)  # must exist: a typo must not create a new key
+    out = copy.deepcopy(_plain(config))
+    node = out
+    parts = path.split(".")
+    for part in parts[:-1]:
+        node = node[int(part)] if isinstance(node, list) else node[part]
+    if isinstance(node, list):
+        node[int(parts[-1])] = value
+    else:
+        node[parts[-1]] = value
+    return out
+
+
+def _plain(x):
+    if isinstance(x, Mapping):
+        return {k: _plain(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_plain(v) for v in x]
+    return x
+
+
+@dataclass(frozen=True)
+class PlausibleRange:
+    """The plausible values of one assumed input and why (its basis in the text)."""
+
+    name: str
+    nominal: Any
+    values: tuple
+    basis: str
+    low: Any = None
+    high: Any = None
+    numeric: bool = field(default=True)
+
+    def describe(self) -> str:
+        if self.numeric and self.low is not None:
+            return f"{_fmt(self.low)}-{_fmt(self.high)}"
+        return ", ".join(_fmt(v) for v in self.values)
+
+
+def plausible_ranges(config: Mapping, doc: str) -> dict[str, PlausibleRange]:
+    """The plausible ranges declared in ``config[doc]['plausible']``.
+
+    Each entry is keyed by a dotted config path and gives either ``values: [...]`` or
+    ``low``, ``high`` and ``n`` (``scale: linear`` or ``log``), and ``basis`` (where the
+    text leaves the value open and why this range). The nominal value (the one the path
+    holds) is always one of the grid's points.
+
+    Raises
+    ------
+    AbglibValueError
+        A path the config lacks, a missing basis, an empty or inverted range, or a
+        nominal value outside it.
+    """
+    specs = config.get(doc, {}).get("plausible", {}) or {}
+    out = {}
+    for name, spec in specs.items():
+        nominal = config_get(config, name)
+        basis = str(spec.get("basis", "")).strip()
+        if not basis:
+            raise AbglibValueError(f"{doc}.plausible.{name}: give the basis in the text")
+        if "values" in spec:
+            values = list(spec["values"])
+            if not values:
+                raise AbglibValueError(f"{doc}.plausible.{name}: values must not be empty")
+            numeric = all(_is_number(v) for v in [*values, nominal])
+            if nominal not in values:
+                values.append(nominal)
+            if numeric:
+                values = sorted(set(values))
+            lo = min(values) if numeric else None
+            hi = max(values) if numeric else None
+        else:
+            try:
+                lo, hi, n = float(spec["low"]), float(spec["high"]), int(spec["n"])
+            except KeyError as exc:
+                raise AbglibValueError(
+                    f"{doc}.plausible.{name}: give values: [...] or low, high and n "
+                    f"(missing {exc.args[0]!r})"
+                ) from None
+            scale = spec.get("scale", "linear")
+            if not (lo < hi) or n < 2:
+                raise AbglibValueError(
+                    f"{doc}.plausible.{name}: need low < high and n >= 2, got "
+                    f"low={lo}, high={hi}, n={n}"
+                )
+            if scale == "log":
+                if lo <= 0:
+                    raise AbglibValueError(
+                        f"{doc}.plausible.{name}: a log range needs low > 0, got {lo}"
+                    )
+                grid = np.geomspace(lo, hi, n)
+            elif scale == "linear":
+                grid = np.linspace(lo, hi, n)
+            else:
+                raise AbglibValueError(
+                    f"{doc}.plausible.{name}: scale must be 'linear' or 'log', got {scale!r}"
+                )
+            if not _is_number(nominal) or not (lo <= float(nominal) <= hi):
+                raise AbglibValueError(
+                    f"{doc}.plausible.{name}: the nominal value {nominal!r} must lie in "
+                    f"[{lo}, {hi}]"
+                )
+            as_int = isinstance(nominal, int) and not isinstance(nominal, bool)
+            grid = [int(round(v)) if as_int else float(v) for v in grid]
+            values = sorted(set(grid) | {nominal})
+            numeric = True
+        out[name] = PlausibleRange(name, nominal, tuple(values), basis, lo, hi, numeric)
+    return out
+
+
+def _is_number(v) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _fmt(v) -> str:
+    return format_number(v, 4) if _is_number(v) else str(v)
+
+
+# --------------------------------------------------------------------------- evaluation
+def evaluate(
+    doc: str,
+    claims: ClaimSet,
+    published: pd.DataFrame,
+    study,
+    make_study: Callable[[Mapping], Any],
+    overrides: Mapping[str, Mapping] | None = None,
+) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """Judge every published claim of one document, and its robustness.
+
+    Parameters
+    ----------
+    doc : str
+        Document key.
+    claims : ClaimSet
+        The document's declarations.
+    published : DataFrame
+        From :func:`abglib.reporting.compare.read_published`.
+    study
+        The study at the nominal configuration (``study.config``).
+    make_study : callable
+        ``make_study(config)`` builds the study at another configuration (used to
+        recompute claims that depend on assumed inputs, one input at a time).
+    overrides : mapping, optional
+        ``{key: {"tolerance": float, "reason": str}}`` (``config.yaml``
+        ``tolerance_overrides``).
+
+    Returns
+    -------
+    (comparison, robustness)
+        ``comparison.csv`` rows (:data:`~abglib.reporting.compare.COMPARISON_COLUMNS`) and
+        the points of every robustness sweep (:data:`ROBUSTNESS_COLUMNS`).
+    """
+    overrides = dict(overrides or {})
+    resolved = claims.resolve(published["key"])
+    unknown = sorted(set(overrides) - set(resolved))
+    if unknown:
+        raise AbglibValueError(f"{doc}: tolerance override for unknown keys {unknown}")
+    ranges = plausible_ranges(study.config, doc)
+    needed = {i for k, c in resolved.items() for i in c.inputs(k)}
+    undeclared = sorted(needed - set(ranges))
+    if undeclared:
+        raise AbglibValueError(
+            f"{doc}: claims depend on inputs without a plausible range in "
+            f"config['{doc}']['plausible']: {undeclared}"
+        )
+    variants: dict[tuple[str, Any], Any] = {}
+
+    def variant(name, value):
+        key = (name, _hashable(value))
+        if key not in variants:
+            variants[key] = make_study(config_with(study.config, name, value))
+        return variants[key]
+
+    rows, points = [], []
+    for pub in published.itertuples(index=False):
+        claim = resolved[pub.key]
+        res = claim.run(study, pub.key)
+        row = judge(doc, pub, res.value, res.note, _alternatives(pub.key, res), overrides)
+        inputs = claim.inputs(pub.key)
+        row["depends_on"] = ";".join(inputs)
+        row["robust"] = ""
+        if inputs:
+            flips = []
+            for name in inputs:
+                rng = ranges[name]
+                by_value = []
+                for value in rng.values:
+                    if _same(value, rng.nominal):
+                        v, rep = row["verdict"], row["reproduced"]
+                    else:
+                        r = claim.run(variant(name, value), pub.key)
+                        alts = _alternatives(pub.key, r)
+                        other = judge(doc, pub, r.value, r.note, alts, overrides)
+                        v, rep = other["verdict"], other["reproduced"]
+                    by_value.append((value, v))
+                    points.append(
+                        {
+                            "key": pub.key,
+                            "input": name,
+                            "value": _fmt(value),
+                            "nominal": _same(value, rng.nominal),
+                            "reproduced": rep,
+                            "verdict": v,
+                        }
+                    )
+                if len({v for _, v in by_value}) > 1:
+                    flips.append(_describe_flip(rng, by_value))
+            row["robust"] = "false" if flips else "true"
+            if flips:
+                was = row["verdict"]
+                row["verdict"] = "not_reproducible"
+                row["note"] = (
+                    f"verdict hinges on inputs the document does not give (one at a time, "
+                    f"others nominal): {'; '.join(flips)}. At the nominal inputs: {was}"
+                    + (f" ({row['note']})" if row["note"] else "")
+                )
+        rows.append(row)
+    comparison = pd.DataFrame(rows, columns=COMPARISON_COLUMNS)
+    return comparison, pd.DataFrame(points, columns=ROBUSTNESS_COLUMNS)
+
+
+def _alternatives(key: str, res: Result) -> list[Alternative]:
+    return [Alternative(key, r.description, r.value, r.section) for r in res.readings]
+
+
+def _same(a, b) -> bool:
+    if _is_number(a) and _is_number(b):
+        return math.isclose(float(a), float(b), rel_tol=1e-12, abs_tol=0.0) or a == b
+    return a == b
+
+
+def _hashable(v):
+    if isinstance(v, (list, dict)):
+        return repr(v)
+    return v
+
+
+def _describe_flip(rng: PlausibleRange, by_value) -> str:
+    """``'antenna.dt' (plausible 0.01-0.1; basis): match at 0.01-0.04, mismatch at 0.05-0.1'``."""
+    runs: list[list] = []
+    for value, v in by_value:
+        if runs and runs[-1][0] == v:
+            runs[-1][2] = value
+        else:
+            runs.append([v, value, value])
+    parts = []
+    for v, a, b in runs:
+        span = _fmt(a) if _same(a, b) else f"{_fmt(a)}-{_fmt(b)}"
+        parts.append(f"{v} at {span}")
+    return (
+        f"{rng.name} (plausible {rng.describe()}, nominal {_fmt(rng.nominal)}): "
+        + ", ".join(parts)
+    )

@@ -1,0 +1,151 @@
+"""Figures of seed 002 (Huang, Yang and Ma): ENBW against xi, thermal error, range tracks."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ...reporting.plotting import _STYLE, plt
+
+__all__ = ['huang_bandwidth_figure', 'huang_thermal_figure', 'huang_track_figure']
+
+
+
+_HUANG_TRACKERS = {2: "α-β", 3: "α-β-γ"}
+
+
+def huang_bandwidth_figure(
+    curves: pd.DataFrame, rule: str, marks: pd.DataFrame, dt: float, title: str = ""
+):
+    """``B_n T`` against ``xi`` for one selection rule, both trackers (seed 002, Figs 2-3).
+
+    Parameters
+    ----------
+    curves : DataFrame
+        ``bandwidth_curves.csv``: ``rule, order, xi, bnT_exact, bnT_closed,
+        bnT_eq13_printed``.
+    rule : {'type1', 'type2'}
+    marks : DataFrame
+        ``tables12.csv``: the printed Tables 1-2 cells, drawn at their printed ``xi`` with
+        their exact ``B_n T`` (stable sets) and at the ``xi`` of the nominal ENBW.
+    dt : float
+        The sample interval ``T`` of the tables (``B_n`` in Hz times ``T``).
+    title : str
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Log ``B_n T``: solid = exact (Lyapunov), dots = the closed forms (eq 14,
+        reconstructed eqs 8-13), thin dashed = eq 13 read literally.
+    """
+    d = curves[curves["rule"] == rule]
+    mk = marks[marks["rule"] == rule]
+    with plt.rc_context(_STYLE):
+        fig, ax = plt.subplots(figsize=(7.0, 4.8), layout="constrained")
+        for order, color in ((2, "C0"), (3, "C3")):
+            c = d[d["order"] == order]
+            name = _HUANG_TRACKERS[order]
+            closed = "eq 14" if order == 2 else "eqs 8–13 (reconstructed)"
+            ax.semilogy(
+                c["xi"], c["bnT_exact"], "-", color=color, label=f"{name}: exact (Lyapunov)"
+            )
+            ax.semilogy(
+                c["xi"].iloc[::6], c["bnT_closed"].iloc[::6], "o", ms=3.5, mfc="none",
+                color=color, label=f"{name}: {closed}",
+            )
+            if order == 3:
+                ax.semilogy(
+                    c["xi"], c["bnT_eq13_printed"], "--", lw=0.9, color="C1",
+                    label="α-β-γ: eq 13 read literally",
+                )
+            m = mk[mk["order"] == order]
+            fin = m[np.isfinite(m["enbw_exact"])]
+            ax.semilogy(
+                fin["xi_printed"], fin["enbw_exact"] * dt,
+                "s", color=color, ms=6, label=f"{name}: Table gains (printed ξ, true B_n T)",
+            )
+            ax.semilogy(
+                m["xi_nominal"], m["bn_nominal_hz"] * dt, "x", color="k", ms=7,
+                label="ξ that gives the nominal 2/10/20 Hz" if order == 2 else None,
+            )
+            for r in m[~np.isfinite(m["enbw_exact"])].itertuples(index=False):
+                ax.annotate(
+                    f"printed ξ={r.xi_printed:g}: unstable", (r.xi_printed, r.bn_nominal_hz * dt),
+                    xytext=(5, 5), textcoords="offset points", fontsize=7, color=color,
+                )
+                ax.plot([r.xi_printed], [r.bn_nominal_hz * dt], "v", color=color, ms=6)
+        for bn in (2, 10, 20):
+            ax.axhline(bn * dt, color="0.6", lw=0.6, ls=":")
+        ax.set_xlabel("ξ (smoothing factor)")
+        ax.set_ylabel("B_n·T (one-sided ENBW × sample interval)")
+        ax.set_xlim(0, 1)
+        ax.legend(loc="best", fontsize=7)
+        if title:
+            ax.set_title(title, fontsize=9)
+    return fig
+
+
+def huang_thermal_figure(thermal: pd.DataFrame, budget_m: float, limits: dict, title: str = ""):
+    """Thermal-noise range error against ENBW (seed 002, Fig 4).
+
+    Parameters
+    ----------
+    thermal : DataFrame
+        ``thermal.csv``: ``enbw_hz, sigma_printed_m, sigma_barton_m``.
+    budget_m : float
+        The error budget of the text (7 m).
+    limits : dict
+        ``{label: ENBW in Hz}`` vertical lines (the paper's 40 Hz, the computed limits).
+    """
+    with plt.rc_context(_STYLE):
+        fig, ax = plt.subplots(figsize=(7.0, 4.6), layout="constrained")
+        ax.loglog(thermal["enbw_hz"], thermal["sigma_printed_m"], "C0-",
+                  label="printed formula τc / (2k √((S/N)₀ F_r / B_n))")
+        ax.loglog(thermal["enbw_hz"], thermal["sigma_barton_m"], "C3--",
+                  label="Barton's 2E/N₀ form (= printed formula at the two-sided ENBW)")
+        ax.axhline(budget_m, color="0.3", lw=0.8, ls=":", label=f"σ = {budget_m:g} m")
+        for i, (label, bn) in enumerate(limits.items()):
+            ax.axvline(bn, color=f"C{i + 4}", lw=0.9, ls="-.", label=f"{label}: {bn:.1f} Hz")
+        ax.set_xlabel("ENBW B_n (Hz, one-sided)")
+        ax.set_ylabel("thermal-noise range error σ (m)")
+        ax.legend(loc="upper left", fontsize=7)
+        if title:
+            ax.set_title(title, fontsize=9)
+    return fig
+
+
+def huang_track_figure(track: pd.DataFrame, panels: list, title: str = "", noisy: bool = True):
+    """Range-tracking errors of the simulated track (seed 002, Figs 5-7).
+
+    Parameters
+    ----------
+    track : DataFrame
+        ``track.csv``: ``t`` and per tracker ``err_<name>`` (with noise) and
+        ``lag_<name>`` (noise-free), truth minus predicted position, m.
+    panels : list of (str, list of (name, label)[, list of (y, label)])
+        One panel per entry: its title, the trackers to draw and, optionally, horizontal
+        reference levels (m) drawn dashed.
+    noisy : bool
+        Draw the noisy error (thin) under the noise-free one (thick).
+    """
+    style = dict(_STYLE, **{"figure.figsize": (8.0, 2.6 * len(panels) + 0.6)})
+    with plt.rc_context(style):
+        fig, axes = plt.subplots(len(panels), 1, layout="constrained", squeeze=False)
+        t = track["t"].to_numpy()
+        for ax, (ptitle, names, *refs) in zip(axes[:, 0], panels, strict=True):
+            for j, (y, label) in enumerate(refs[0] if refs else []):
+                ax.axhline(y, color=f"C{j + 5}", lw=1.0, ls="--", label=label)
+            for i, (name, label) in enumerate(names):
+                if noisy:
+                    ax.plot(t, track[f"err_{name}"], color=f"C{i}", lw=0.4, alpha=0.45)
+                ax.plot(
+                    t, track[f"lag_{name}"], color=f"C{i}", lw=1.6, label=f"{label} (noise-free)"
+                )
+            ax.axhline(0.0, color="k", lw=0.6)
+            ax.set_ylabel("range error R − R_p (m)")
+            ax.set_title(ptitle, fontsize=9)
+            ax.legend(loc="best", fontsize=7)
+        axes[-1, 0].set_xlabel("time (s)")
+        if title:
+            fig.suptitle(title, fontsize=9)
+    return fig

@@ -1,0 +1,1 @@
+"""Seed 000: J. E. Steelman, *Frequency Response of α-β-γ Trackers* (WSMR, 1978)."""
