@@ -124,12 +124,16 @@ REPORT_CONTENT = {
 }
 
 
-def published_tables(wildcards):
+def published_tables_of(doc):
     """Transcription files of one document (data/published/<doc>/*.csv)."""
-    files = sorted((PUBLISHED / wildcards.doc).glob("*.csv"))
+    files = sorted((PUBLISHED / doc).glob("*.csv"))
     if not files:
-        raise WorkflowError(f"no published tables in {PUBLISHED / wildcards.doc}")
+        raise WorkflowError(f"no published tables in {PUBLISHED / doc}")
     return [str(f) for f in files]
+
+
+def published_tables(wildcards):
+    return published_tables_of(wildcards.doc)
 
 
 def report_figures(doc):
