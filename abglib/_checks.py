@@ -44,14 +44,35 @@ def _first_bad(arr: np.ndarray, bad: np.ndarray) -> str:
 
 
 def as_float_array(name: str, value) -> np.ndarray:
-    """Convert ``value`` to a float64 array, or raise naming ``name``."""
+    """Convert ``value`` to a float64 array, or raise naming ``name``.
+
+    Only real numbers are accepted: a string (even ``"0.3"``), ``None`` or a complex
+    value is refused instead of being parsed, turned into NaN or cast to its real part.
+    """
+    if value is None or isinstance(value, (str, bytes)):
+        raise AbglibValueError(f"{name} must be a real number or array of them, got {value!r}")
+    arr = np.asarray(value)
+    if arr.dtype.kind in "USV":
+        raise AbglibValueError(
+            f"{name} must be a real number or array of them, got strings ({describe(arr)})"
+        )
+    if arr.dtype.kind == "c":
+        raise AbglibValueError(
+            f"{name} must be real, got complex values ({describe(arr)}); pass z.real or "
+            "abs(z) explicitly"
+        )
+    if arr.dtype.kind == "O":
+        for v in arr.flat:
+            if not isinstance(v, numbers.Real):
+                raise AbglibValueError(
+                    f"{name} must be a real number or array of them, got an element {v!r}"
+                )
     try:
-        arr = np.asarray(value, dtype=np.float64)
+        return np.asarray(arr, dtype=np.float64)
     except (TypeError, ValueError) as exc:
         raise AbglibValueError(
             f"{name} must be a real number or array of them, got {value!r}"
         ) from exc
-    return arr
 
 
 def check_finite(name: str, value) -> np.ndarray:

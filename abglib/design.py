@@ -102,6 +102,30 @@ def _gains(alpha, beta, gamma=0.0) -> Gains:
     return Gains(scalar_or_array(alpha), scalar_or_array(beta), scalar_or_array(gamma))
 
 
+def _require_stable_design(gains: Gains, rule: str, **inputs) -> Gains:
+    """``gains`` if every gain set of the bank is stable, else an error naming the inputs.
+
+    For rules whose domain does not guarantee stability (Simpson's condition leaves one
+    degree of freedom, and large alpha with a given gamma gives beta beyond the Jury
+    bounds of seed 000, eqs 45-47).
+    """
+    from .analysis import is_stable, pole_radius
+
+    stable = np.asarray(is_stable(gains))
+    if stable.all():
+        return gains
+    i = tuple(np.argwhere(~stable)[0]) if stable.ndim else ()
+    given = ", ".join(
+        f"{k}={describe(np.asarray(v)[i] if np.ndim(v) else v)}" for k, v in inputs.items()
+    )
+    g = gains[i] if stable.ndim else gains
+    raise AbglibValueError(
+        f"{rule}: the gains for {given} are unstable ({g!r}, pole radius "
+        f"{float(pole_radius(g)):.6g} >= 1, against seed 000, eqs 45-47); the rule does not "
+        "imply stability: choose other inputs or another rule"
+    )
+
+
 # --------------------------------------------------------------------------- standard
 def standard_ab(theta) -> Gains:
     r"""Critically damped ("standard", fading-memory degree 1) alpha-beta gains.
@@ -346,7 +370,7 @@ def benedict_bordner(alpha) -> Gains:
 m1 = benedict_bordner
 
 
-def simpson_gamma(alpha, beta) -> Gains:
+def simpson_gamma(alpha, beta, *, allow_unstable: bool = False) -> Gains:
     r"""Complete ``(alpha, beta)`` with the gamma of Simpson's condition.
 
     Parameters
@@ -357,10 +381,19 @@ def simpson_gamma(alpha, beta) -> Gains:
         ``beta >= alpha^2 / (2 - alpha)`` (the Benedict-Bordner value, where
         ``gamma = 0``), so that ``gamma >= 0`` (seed 000, eq 48).
 
+    allow_unstable : bool, default False
+        Return the gains even where they are unstable (Simpson's condition does not
+        imply stability: e.g. alpha = 1.99, gamma = 0.05 gives beta = 401).
     Returns
     -------
     Gains
 
+
+    Raises
+    ------
+    AbglibValueError
+        Inputs outside their domain, or (unless ``allow_unstable``) inputs whose Simpson
+        gains are unstable, naming them and the pole radius.
     Notes
     -----
     Seed 000, eq 21, :math:`2\beta - \alpha(\alpha + \beta + \gamma/2) = 0`, solved
@@ -370,8 +403,8 @@ def simpson_gamma(alpha, beta) -> Gains:
 
     Examples
     --------
-    >>> round(simpson_gamma(0.5, 0.2).gamma, 12)
-    0.2
+    >>> round(simpson_gamma(0.5, 0.175).gamma, 12)
+    0.05
     """
     a = check_in_range("alpha", alpha, 0.0, 2.0)
     b = check_positive("beta", beta)
@@ -387,10 +420,11 @@ def simpson_gamma(alpha, beta) -> Gains:
             f"that is beta >= {b_min[i]:.6g}, got {describe(b[i])}"
         )
     gamma = np.maximum(4.0 * b / a - 2.0 * a - 2.0 * b, 0.0)
-    return _gains(a, b, gamma)
+    g = _gains(a, b, gamma)
+    return g if allow_unstable else _require_stable_design(g, "simpson_gamma", alpha=a, beta=b)
 
 
-def simpson_beta(alpha, gamma) -> Gains:
+def simpson_beta(alpha, gamma, *, allow_unstable: bool = False) -> Gains:
     r"""Complete ``(alpha, gamma)`` with the beta of Simpson's condition.
 
     Parameters
@@ -400,10 +434,19 @@ def simpson_beta(alpha, gamma) -> Gains:
     gamma : float or array (...)
         ``gamma >= 0`` (canonical convention).
 
+    allow_unstable : bool, default False
+        Return the gains even where they are unstable (Simpson's condition does not
+        imply stability: e.g. alpha = 1.99, gamma = 0.05 gives beta = 401).
     Returns
     -------
     Gains
 
+
+    Raises
+    ------
+    AbglibValueError
+        Inputs outside their domain, or (unless ``allow_unstable``) inputs whose Simpson
+        gains are unstable, naming them and the pole radius.
     Notes
     -----
     Seed 000, eq 21 solved for beta:
@@ -412,15 +455,16 @@ def simpson_beta(alpha, gamma) -> Gains:
 
     Examples
     --------
-    >>> round(simpson_beta(0.5, 0.2).beta, 12)
-    0.2
+    >>> round(simpson_beta(0.5, 0.05).beta, 12)
+    0.175
     """
     a = check_in_range("alpha", alpha, 0.0, 2.0)
     g = check_in_range("gamma", gamma, 0.0, None, low_inclusive=True)
-    return _gains(a, a * (a + g / 2.0) / (2.0 - a), g)
+    out = _gains(a, a * (a + g / 2.0) / (2.0 - a), g)
+    return out if allow_unstable else _require_stable_design(out, "simpson_beta", alpha=a, gamma=g)
 
 
-def simpson(alpha, beta=None, gamma=None) -> Gains:
+def simpson(alpha, beta=None, gamma=None, *, allow_unstable: bool = False) -> Gains:
     r"""Gains satisfying Simpson's optimality condition, given alpha and one other gain.
 
     Parameters
@@ -431,10 +475,19 @@ def simpson(alpha, beta=None, gamma=None) -> Gains:
         Exactly one of them; the other is solved for (:func:`simpson_gamma`,
         :func:`simpson_beta`).
 
+    allow_unstable : bool, default False
+        Return the gains even where they are unstable (Simpson's condition does not
+        imply stability: e.g. alpha = 1.99, gamma = 0.05 gives beta = 401).
     Returns
     -------
     Gains
 
+
+    Raises
+    ------
+    AbglibValueError
+        Inputs outside their domain, or (unless ``allow_unstable``) inputs whose Simpson
+        gains are unstable, naming them and the pole radius.
     Notes
     -----
     Seed 000, eq 21 (Simpson 1963), which minimises all the performance measures of
@@ -444,7 +497,7 @@ def simpson(alpha, beta=None, gamma=None) -> Gains:
 
     Examples
     --------
-    >>> simpson(0.5, gamma=0.2) == simpson_beta(0.5, 0.2)
+    >>> simpson(0.5, gamma=0.05) == simpson_beta(0.5, 0.05)
     True
     """
     if (beta is None) == (gamma is None):
@@ -452,7 +505,9 @@ def simpson(alpha, beta=None, gamma=None) -> Gains:
             "simpson needs exactly one of beta and gamma (the other is solved from "
             f"seed 000, eq 21), got beta={beta!r}, gamma={gamma!r}"
         )
-    return simpson_gamma(alpha, beta) if gamma is None else simpson_beta(alpha, gamma)
+    if gamma is None:
+        return simpson_gamma(alpha, beta, allow_unstable=allow_unstable)
+    return simpson_beta(alpha, gamma, allow_unstable=allow_unstable)
 
 
 # --------------------------------------------------------------------------- growing memory
@@ -802,7 +857,11 @@ def kalata_ab(tracking_index) -> Gains:
     (0.75, 0.5)
     """
     lam = check_positive("tracking_index", tracking_index)
-    r = (4.0 + lam - np.sqrt(8.0 * lam + lam**2)) / 4.0
+    # r = (4 + lam - sqrt(8 lam + lam^2)) / 4 without the cancellation that makes it 0
+    # (and the gains the unstable (1, 2)) for a large index: with s = sqrt(1 + 8/lam),
+    # r = (8/lam) / (1 + s)^2 exactly
+    s = np.sqrt(1.0 + 8.0 / lam)
+    r = (8.0 / lam) / (1.0 + s) ** 2
     return _gains(1.0 - r**2, 2.0 * (1.0 - r) ** 2)
 
 

@@ -14,7 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.linalg import expm
 
-from abglib import Gains, design, track
+from abglib import AbglibValueError, Gains, design, track
 from abglib.conventions import to_huang
 from abglib.design import (
     BENDIX_CAPTIONS,
@@ -219,23 +219,25 @@ def test_benedict_bordner_is_simpson_with_zero_gamma(alpha):
     g = benedict_bordner(alpha)
     assert m1 is benedict_bordner
     assert g.beta == pytest.approx(alpha**2 / (2 - alpha), rel=1e-15)  # seed 001, eq 23b
-    assert simpson_beta(alpha, 0.0).isclose(g, rtol=1e-14)
+    assert simpson_beta(alpha, 0.0, allow_unstable=True).isclose(g, rtol=1e-14)
     assert 2 * g.beta - alpha * (alpha + g.beta) == pytest.approx(0.0, abs=1e-15)  # eq 21
 
 
 @FAST
 @given(st.floats(0.01, 1.9), st.floats(0.0, 5.0))
 def test_simpson_eq21_both_ways(alpha, gamma):
-    g = simpson(alpha, gamma=gamma)
+    g = simpson(alpha, gamma=gamma, allow_unstable=True)  # the algebra, stable or not
     lhs = 2 * g.beta - alpha * (alpha + g.beta + g.gamma / 2)  # seed 000, eq 21
     assert lhs == pytest.approx(0.0, abs=1e-12 * (1 + g.beta))
-    back = simpson(alpha, beta=g.beta)
+    back = simpson(alpha, beta=g.beta, allow_unstable=True)
     assert back.gamma == pytest.approx(gamma, rel=1e-9, abs=1e-9)
 
 
 def test_simpson_gamma_values():
-    g = simpson_gamma(0.5, 0.2)  # 4*0.2/0.5 - 1 - 0.4 = 0.2 (hand arithmetic)
+    g = simpson_gamma(0.5, 0.2, allow_unstable=True)  # 4*0.2/0.5 - 1 - 0.4 = 0.2 (by hand)
     assert g.gamma == pytest.approx(0.2, rel=1e-14)
+    g = simpson_gamma(0.5, 0.175)  # 4*0.175/0.5 - 1 - 0.35 = 0.05 (by hand), stable
+    assert g.gamma == pytest.approx(0.05, rel=1e-13)
     assert simpson_gamma(0.5, 0.25 / 1.5).gamma == pytest.approx(0.0, abs=1e-15)  # BB beta
 
 
@@ -558,3 +560,33 @@ def test_steady_state_kalman_broadcasts():
 def test_error_messages(call, message):
     with pytest.raises(ValueError, match=message):
         call()
+
+
+@pytest.mark.parametrize(
+    "call, match",
+    [
+        # beta = 1.99 (1.99 + 0.025) / 0.01 = 400.985 (seed 000, eq 21 solved for beta)
+        (lambda: simpson(1.99, gamma=0.05), r"alpha=1.99, gamma=0.05 are unstable.*beta=400.985"),
+        # (0.5, 0.2, 0.2) satisfies eq 21 but violates Jury's eq 47: pole radius 1.055
+        (lambda: simpson_gamma(0.5, 0.2), r"alpha=0.5, beta=0.2 are unstable.*pole radius 1.055"),
+        (lambda: simpson(np.array([0.5, 1.99]), gamma=0.05), r"alpha=1.99"),
+    ],
+)
+def test_simpson_refuses_unstable_gains(call, match):
+    with pytest.raises(AbglibValueError, match=match):
+        call()
+
+
+def test_kalata_ab_large_index_is_stable_and_accurate():
+    from abglib.analysis import is_stable
+
+    # the textbook form r = (4 + L - sqrt(8 L + L^2)) / 4 cancels to 0 at L = 1e12 and
+    # gives the unstable (1, 2); r = (8/L) / (1 + sqrt(1 + 8/L))^2 is the same number
+    for lam in (1e8, 1e12, 1e15):
+        g = kalata_ab(lam)
+        r = 2.0 / lam  # leading term of the series of r in 1/L
+        assert g.beta == pytest.approx(2.0 * (1.0 - r) ** 2, rel=1e-12)
+        assert g.beta < 2.0 and is_stable(g)
+    for lam in (1e-3, 0.5, 1.0, 30.0):
+        r = (4.0 + lam - np.sqrt(8.0 * lam + lam**2)) / 4.0  # no cancellation at small L
+        assert kalata_ab(lam).alpha == pytest.approx(1.0 - r**2, rel=1e-13)

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from abglib import Gains, track
+from abglib import AbglibValueError, Gains, track
 from abglib.engine import OUTPUTS
 
 from .reference import literal_track
@@ -223,3 +223,18 @@ def test_alpha_beta_fast_path_is_bit_identical_to_general_kernel():
     )
     for name, b in zip(OUTPUTS, bufs, strict=True):
         np.testing.assert_array_equal(getattr(fast, name), b, err_msg=name)
+
+
+@pytest.mark.parametrize(
+    "kwargs, match",
+    [
+        ({"z": np.ones(5) + 1j}, r"z must be real, got complex"),
+        ({"z": ["1", "2"]}, r"z must be a real number or array of them, got strings"),
+        ({"dt": "0.1"}, r"dt must be a real number or array of them, got '0.1'"),
+        ({"dt": None}, r"dt must be a real number or array of them, got None"),
+    ],
+)
+def test_track_refuses_strings_and_complex(kwargs, match):
+    args = {"z": np.ones(5), "dt": 1.0, **kwargs}
+    with pytest.raises(AbglibValueError, match=match):
+        track(args["z"], Gains(0.5, 0.2), dt=args["dt"])

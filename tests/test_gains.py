@@ -7,7 +7,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from abglib import Gains
+from abglib import AbglibValueError, Gains
 
 
 def test_scalars_are_floats_and_order():
@@ -52,3 +52,26 @@ def test_bank_indexing_and_equality():
 def test_bad_gains(args, match):
     with pytest.raises(ValueError, match=match):
         Gains(*args)
+
+
+@pytest.mark.parametrize(
+    "args, match",
+    [
+        (("0.3", 0.1), r"alpha must be a real number or array of them, got '0.3'"),
+        ((None, 0.1), r"alpha must be a real number or array of them, got None"),
+        ((0.3, 0.1 + 0.0j), r"beta must be real, got complex"),
+        ((np.array(["0.3"]), 0.1), r"alpha must be a real number or array of them, got strings"),
+        ((np.array([0.3, None], dtype=object), 0.1), r"alpha .* got an element None"),
+    ],
+)
+def test_gains_refuse_strings_none_and_complex(args, match):
+    # numbers are never parsed from text nor cast from complex: the caller converts
+    with pytest.raises(AbglibValueError, match=match):
+        Gains(*args)
+
+
+def test_gains_accept_numpy_and_fraction_scalars():
+    from fractions import Fraction
+
+    g = Gains(np.float32(0.25), Fraction(1, 8), np.int64(0))
+    assert (g.alpha, g.beta, g.gamma) == (0.25, 0.125, 0.0)

@@ -24,7 +24,7 @@ def test_every_rule_listed_in_the_module_doc():
         # Benedict-Bordner alpha = 0.5: beta = 0.25 / 1.5 (seed 001, eq 23b)
         ({"rule": "benedict_bordner", "alpha": 0.5}, Gains(0.5, 1 / 6)),
         # Simpson, alpha = 0.5, gamma = 0.2: beta = 0.5 * 0.6 / 1.5 (seed 000, eq 21)
-        ({"rule": "simpson", "alpha": 0.5, "gamma": 0.2}, Gains(0.5, 0.2, 0.2)),
+        ({"rule": "simpson", "alpha": 0.5, "gamma": 0.05}, Gains(0.5, 0.175, 0.05)),
         # Kalata index 1: (0.75, 0.5) (Kalata 1984, worked by hand: r = 0.5)
         ({"rule": "kalata_ab", "tracking_index": 1.0}, Gains(0.75, 0.5)),
         # the memo's T = 3 s row (seed 003)
