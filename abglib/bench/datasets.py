@@ -70,6 +70,7 @@ __all__ = [
     "generate",
     "read",
     "write",
+    "build",
 ]
 
 #: Version of the generator; bump when the same spec would give different numbers.
@@ -584,3 +585,19 @@ def read(parquet_path, manifest_path=None) -> Dataset:
         noise=noise,
         manifest=manifest,
     )
+
+
+def build(name: str, spec: Mapping, parquet_path, manifest_path, log_path=None) -> Dataset:
+    """Generate one scenario and write it (:func:`generate`, :func:`write`): the whole job of
+    the workflow's ``dataset`` rule, run in-process; a one-line summary goes to ``log_path``."""
+    from pathlib import Path
+
+    ds = generate(name, spec)
+    write(ds, parquet_path, manifest_path)
+    if log_path is not None:
+        Path(log_path).write_text(
+            f"wrote {parquet_path}: {ds.runs} runs x {ds.n_samples} samples, "
+            f"coords {ds.coords}, noise {ds.noise}\n",
+            encoding="utf-8",
+        )
+    return ds

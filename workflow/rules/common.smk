@@ -176,7 +176,8 @@ def all_targets():
 
 def doc_config(doc, *extra):
     """What a document's study reads: its own config section and the ``extra`` top-level
-    sections, as one mapping (a rule param, so that a change to them reruns the rule)."""
+    sections, as one mapping (a rule param, so that a change to them reruns the rule).
+    """
     return {k: config[k] for k in (doc, *extra) if k in config}
 
 
@@ -184,3 +185,83 @@ def reproduce_outputs(doc, tables):
     """Named outputs of a ``<doc>_reproduce`` rule: every study table, the comparison and
     the robustness sweep, under ``results/<doc>/``."""
     return {t: f"results/{doc}/{t}.csv" for t in [*tables, "comparison", "robustness"]}
+
+
+# ---------------------------------------------------------------- benchmark matrix
+# (benchmark.smk): the variants and scenarios of config['benchmark'], checked at parse
+# time, and the input functions of its rules.
+
+import re
+
+from abglib.bench.benchmark import n_vrf_checks
+from abglib.bench.variants import variant_gains, variant_rule
+
+BENCH = config.get("benchmark", {})
+BENCH_VARIANTS = BENCH.get("variants", {})
+BENCH_SCENARIOS = list(BENCH.get("scenarios", []))
+
+
+def _check_benchmark():
+    """Fail at parse time on an unknown scenario, rule or parameter, or on a variant no
+    scenario can realise (each message names the variant)."""
+    for s in BENCH_SCENARIOS:
+        dataset_files(s)
+    for name, spec in BENCH_VARIANTS.items():
+        variant_rule(spec, name)
+        errors = []
+        for s in BENCH_SCENARIOS:
+            sc = DATASET_SCENARIOS[s]
+            try:
+                if variant_rule(spec, name)[0].kind == "gains":
+                    variant_gains(spec, float(sc["dt"]), int(sc["n_samples"]), name)
+            except ValueError as exc:
+                errors.append(f"{s}: {exc}")
+        if BENCH_SCENARIOS and len(errors) == len(BENCH_SCENARIOS):
+            raise WorkflowError(
+                f"benchmark variant {name!r} is infeasible on every scenario:\n  "
+                + "\n  ".join(errors)
+            )
+
+
+if BENCH:
+    _check_benchmark()
+
+
+def bench_runs(scenario):
+    """Monte Carlo runs of a cell: the config override, else the dataset's own runs."""
+    runs = BENCH.get("runs")
+    return int(runs) if runs else int(DATASET_SCENARIOS[scenario]["runs"])
+
+
+def bench_mem_mb(wildcards):
+    """Memory of a cell: the dataset (4 arrays per coordinate) plus two tracked chunks."""
+    sc = DATASET_SCENARIOS[wildcards.scenario]
+    n, runs = int(sc["n_samples"]), bench_runs(wildcards.scenario)
+    chunk = min(runs, int(BENCH["chunk_runs"]))
+    return 400 + (runs * n * 2 * 5 + chunk * n * 2 * 16) * 8 // 10**6
+
+
+def _check_family_size():
+    """The Bonferroni bound assumes at most family_size VRF checks in the matrix."""
+    n = n_vrf_checks(len(BENCH_VARIANTS), len(BENCH_SCENARIOS))
+    if n > int(BENCH["family_size"]):
+        raise WorkflowError(
+            f"the benchmark matrix can hold {n} VRF checks, more than "
+            f"benchmark.family_size = {BENCH['family_size']}; raise family_size"
+        )
+
+
+if BENCH:
+    _check_family_size()
+
+
+def bench_cells():
+    return expand(
+        "results/benchmark/cells/{variant}/{scenario}.csv",
+        variant=list(BENCH_VARIANTS),
+        scenario=BENCH_SCENARIOS,
+    )
+
+
+def bench_targets():
+    return [f"{REPORTS}/benchmark/index.html"] if BENCH else []

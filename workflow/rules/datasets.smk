@@ -17,14 +17,10 @@ rule dataset:
         library=LIBRARY_HASH,
         spec=lambda wildcards: DATASET_SCENARIOS[wildcards.scenario],
     run:
-        from abglib.bench import datasets
+        from abglib.bench.datasets import build
 
-        ds = datasets.generate(wildcards.scenario, params.spec)
-        datasets.write(ds, output.parquet, output.manifest)
-        Path(log[0]).write_text(
-            f"wrote {output.parquet}: {ds.runs} runs x {ds.n_samples} samples, "
-            f"coords {ds.coords}, noise {ds.noise}\n",
-            encoding="utf-8",
+        build(
+            wildcards.scenario, params.spec, output.parquet, output.manifest, log[0]
         )
 
 
