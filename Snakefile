@@ -22,3 +22,8 @@ rule all:
     input:
         all_targets(),
         bench_targets(),
+
+
+onsuccess:
+    if Path(f"{REPORTS}/index.html").exists():
+        print(f"\nReports: {Path(REPORTS, 'index.html').resolve()}", file=sys.stderr)

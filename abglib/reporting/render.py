@@ -108,8 +108,11 @@ def render_notebook(
         If the HTML would contain the absolute working directory (outputs must be
         relocatable and identical wherever they are built).
     """
+    import tempfile
+
     import jupytext
     import nbclient
+    from jupyter_client import KernelManager
     from nbconvert import HTMLExporter
 
     nb = jupytext.read(source, fmt="py:percent")
@@ -119,13 +122,18 @@ def render_notebook(
         "language": "python",
     }
     inject_parameters(nb, parameters)
-    client = nbclient.NotebookClient(
-        nb,
-        timeout=timeout,
-        kernel_name="python3",
-        resources={"metadata": {"path": str(cwd)}},
-    )
-    client.execute()
+    # the kernel talks to us over Unix sockets in a private temporary folder (IPC), not
+    # over plain-text TCP (which the kernel warns about on every report)
+    with tempfile.TemporaryDirectory(prefix="abglib-kernel-") as sockets:
+        km = KernelManager(kernel_name="python3", transport="ipc", ip=str(Path(sockets) / "kernel"))
+        client = nbclient.NotebookClient(
+            nb, km=km, timeout=timeout, resources={"metadata": {"path": str(cwd)}}
+        )
+        try:
+            client.execute()
+        finally:
+            if km.has_kernel:
+                km.shutdown_kernel(now=False)
     removed = strip_volatile(nb)
     if log is not None:
         for text in removed:

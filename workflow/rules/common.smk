@@ -1,5 +1,7 @@
 # Shared by every rule: config validation, the report version, paths and input functions.
 
+import re
+import sys
 from pathlib import Path
 
 import abglib
@@ -190,9 +192,6 @@ def reproduce_outputs(doc, tables):
 # ---------------------------------------------------------------- benchmark matrix
 # (benchmark.smk): the variants and scenarios of config['benchmark'], checked at parse
 # time, and the input functions of its rules.
-
-import re
-
 from abglib.bench.benchmark import n_vrf_checks
 from abglib.bench.variants import variant_gains, variant_rule
 
