@@ -6,6 +6,7 @@ columns, the scorecard adds up, the two runs give byte-identical CSV tables, and
 invocation in the same directory schedules nothing.
 """
 
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -21,11 +22,12 @@ pytestmark = pytest.mark.pipeline
 REPO = Path(__file__).resolve().parents[1]
 SMALL = REPO / "tests" / "data" / "config_small.yaml"
 SNAKEMAKE = Path(sys.executable).parent / "snakemake"
-REPORTS = Path("reports") / f"v{abglib.__version__}"
+# a build writes its reports here; reports/v<version> (the release) only `abglib release` writes
+REPORTS = Path("results") / "reports" / f"v{abglib.__version__}"
 OLD_REPORT = "<html>an older version's report</html>"
 
 
-def _snakemake(workdir: Path, *args: str) -> subprocess.CompletedProcess:
+def _snakemake(workdir: Path, *args: str, env=None) -> subprocess.CompletedProcess:
     exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
     cmd = [
         exe,
@@ -37,19 +39,21 @@ def _snakemake(workdir: Path, *args: str) -> subprocess.CompletedProcess:
         str(SMALL),
         *args,
     ]
-    return subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=600, env=env)
 
 
 @pytest.fixture(scope="module")
 def two_runs(tmp_path_factory):
     dirs = []
+    # the second build runs on another OpenBLAS kernel: the tables must not depend on it
+    envs = {"run1": None, "run2": dict(os.environ, OPENBLAS_CORETYPE="Prescott")}
     for name in ("run1", "run2"):
         d = tmp_path_factory.mktemp(name)
         # an older version's report, which building this version must not touch
         old = d / "reports" / "v0.0.0" / "steelman1978" / "index.html"
         old.parent.mkdir(parents=True)
         old.write_text(OLD_REPORT, encoding="utf-8")
-        out = _snakemake(d, "-c2")
+        out = _snakemake(d, "-c2", env=envs[name])
         assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
         dirs.append(d)
     return dirs
@@ -70,9 +74,11 @@ def test_outputs_exist(two_runs):
     assert (d / "logs").is_dir()
 
 
-def test_older_version_untouched(two_runs):
+def test_older_version_untouched_and_no_release_written(two_runs):
     old = two_runs[0] / "reports" / "v0.0.0"
     assert sorted(p.name for p in old.rglob("*") if p.is_file()) == ["index.html"]
+    # a build never writes a release folder: only `abglib release` does
+    assert sorted(p.name for p in (two_runs[0] / "reports").iterdir()) == ["v0.0.0"]
     assert (old / "steelman1978" / "index.html").read_text(encoding="utf-8") == OLD_REPORT
 
 
@@ -93,6 +99,27 @@ def test_report_is_self_contained_and_relocatable(two_runs):
     assert "data:image/png;base64," in html
     assert str(two_runs[0]) not in html and str(REPO) not in html
     assert "config sha256" in html
+
+
+def test_abglib_verify_finds_the_two_builds_identical(two_runs):
+    """Run 2 (another BLAS kernel) against run 1 as the release: every table within its
+    written precision, every verdict identical."""
+    a, b = two_runs
+    exe = Path(sys.executable).parent / "abglib"
+    out = subprocess.run(
+        [
+            str(exe) if exe.exists() else "abglib",
+            "verify",
+            str(b / REPORTS),
+            "--release",
+            str(a / REPORTS),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-2000:]
+    assert "verdicts identical" in out.stdout
 
 
 def test_two_clean_runs_give_identical_csv_tables(two_runs):

@@ -209,7 +209,6 @@ rule benchmark_report:
                 "tradeoff_curves",
                 "variants",
                 "peers",
-                "engine_speed",
             ],
         ),
     log:

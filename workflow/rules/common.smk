@@ -24,9 +24,11 @@ except WorkflowError:
 # every job imports abglib from this repository, whatever environment runs it (--sdm conda)
 prepend_pythonpath(workflow.basedir)
 
-# the report version is the package version (CONTRACTS.md §4), never a config value
+# the report version is the package version (CONTRACTS.md §4), never a config value. A build
+# writes its reports under results/; the committed release reports/v<version> is written
+# only by the deliberate `abglib release` (README), never by a build
 VERSION = abglib.__version__
-REPORTS = f"reports/v{VERSION}"
+REPORTS = f"results/reports/v{VERSION}"
 DOCS = config["docs"]
 
 # titles of the source documents (shared/seeds/README.md), for the index page

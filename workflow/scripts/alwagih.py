@@ -17,8 +17,8 @@ import pandas as pd
 
 from abglib.analysis import is_stable, poles, stable_alwagih_eq12_14
 from abglib.bench import datasets
-from abglib.replications.alwagih.study import BASES, COMPARED, PAPER_METHODS
 from abglib.replications.alwagih import study as alwagih
+from abglib.replications.alwagih.study import BASES, COMPARED, PAPER_METHODS
 from abglib.reporting.compare import format_number, parse_printed, read_published, write_csv
 from abglib.reporting.pipeline import atomic_output, log_to
 

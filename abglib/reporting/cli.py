@@ -1,0 +1,93 @@
+"""The ``abglib`` command: ``abglib verify`` and ``abglib release``.
+
+``abglib verify``
+    Compare the tables of a build (default ``results/reports/v<version>``, what
+    ``snakemake -c2`` writes) with a release folder (default the committed
+    ``reports/v<version>``) within the precision each number is written to; print, per
+    document, the rows compared, the verdicts that are identical and the largest
+    deviation and where; exit 1 on any difference.
+``abglib release``
+    Cut a release: copy a build to ``reports/v<version>``. The one deliberate step that
+    writes the committed release (a build never does); it refuses to replace an existing
+    release folder without ``--force``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+import sys
+from pathlib import Path
+
+from .. import __version__
+from .verify import compare_folders, format_report
+
+BUILD = Path("results") / "reports" / f"v{__version__}"
+RELEASE = Path("reports") / f"v{__version__}"
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="abglib", description=__doc__.split("\n\n")[0])
+    sub = p.add_subparsers(dest="command", required=True)
+    v = sub.add_parser("verify", help="compare a build's tables with a release")
+    v.add_argument("build", nargs="?", type=Path, default=BUILD, help=f"default: {BUILD}")
+    v.add_argument("--release", type=Path, default=RELEASE, help=f"default: {RELEASE}")
+    v.add_argument("--limit", type=int, default=5, help="differences listed per document")
+    r = sub.add_parser("release", help="copy a build to reports/v<version>")
+    r.add_argument("build", nargs="?", type=Path, default=BUILD, help=f"default: {BUILD}")
+    r.add_argument("--to", type=Path, default=RELEASE, help=f"default: {RELEASE}")
+    r.add_argument("--force", action="store_true", help="replace an existing release folder")
+    return p
+
+
+def verify(build: Path, release: Path, limit: int = 5) -> int:
+    for what, folder in (("build", build), ("release", release)):
+        if not (folder / "index.html").is_file():
+            print(
+                f"abglib verify: no {what} at {folder} (no index.html there); "
+                + (
+                    "run `snakemake -c2` first"
+                    if what == "build"
+                    else "give the release folder with --release"
+                ),
+                file=sys.stderr,
+            )
+            return 2
+    reports = compare_folders(release, build)
+    print(f"abglib verify: build {build} against release {release}")
+    print(format_report(reports, limit))
+    bad = [r.doc for r in reports if not r.ok]
+    if bad:
+        print(f"DIFFERENT: {', '.join(bad)}", file=sys.stderr)
+        return 1
+    print("identical within the written precision; verdicts identical")
+    return 0
+
+
+def release(build: Path, to: Path, force: bool = False) -> int:
+    if not (build / "index.html").is_file():
+        print(f"abglib release: no build at {build}; run `snakemake -c2` first", file=sys.stderr)
+        return 2
+    if to.exists():
+        if not force:
+            print(
+                f"abglib release: {to} exists; a release is replaced only on purpose: "
+                "add --force",
+                file=sys.stderr,
+            )
+            return 2
+        shutil.rmtree(to)
+    shutil.copytree(build, to)
+    print(f"released {build} -> {to}; review `git status {to}` and commit it")
+    return 0
+
+
+def main(argv=None) -> int:
+    args = _parser().parse_args(argv)
+    if args.command == "verify":
+        return verify(args.build, args.release, args.limit)
+    return release(args.build, args.to, args.force)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

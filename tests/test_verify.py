@@ -1,0 +1,97 @@
+"""abglib verify and abglib release (abglib.reporting.verify, abglib.reporting.cli)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from abglib.reporting.cli import main
+from abglib.reporting.verify import cell_agrees, compare_folders
+
+COMP = "doc,item,reproduced,verdict,note\nd,a,0.1235,match,\nd,b,12.5,mismatch,off by 2\n"
+
+
+@pytest.mark.parametrize(
+    "release, build, agrees",
+    [
+        ("0.1235", "0.1235", True),
+        ("0.1235", "0.1234", True),  # one unit in the last written digit: a rounding flip
+        ("0.1235", "0.1233", False),
+        ("1.20", "1.2", True),  # same value; the coarser one's last digit sets the unit
+        ("<1e-12", "<1e-12", True),
+        ("<1e-12", "3e-13", True),  # a bound holds a smaller number
+        ("<1e-12", "2e-12", False),
+        ("match", "mismatch", False),
+        ("", "", True),
+        ("", "0", False),
+    ],
+)
+def test_cell_agreement_is_within_the_written_precision(release, build, agrees):
+    assert cell_agrees(release, build)[0] is agrees
+
+
+def test_relative_deviation_of_numbers():
+    ok, dev = cell_agrees("2.000", "2.001")
+    assert ok and dev == pytest.approx(5e-4)
+    assert math.isnan(cell_agrees("a", "b")[1])
+
+
+def _folder(root, comp=COMP, extra=None):
+    (root / "doc").mkdir(parents=True)
+    (root / "index.html").write_text("<html></html>")
+    (root / "scorecard.csv").write_text("doc,match,total\ndoc,1,2\n")
+    (root / "doc" / "comparison.csv").write_text(comp)
+    if extra:
+        (root / "doc" / "extra.csv").write_text(extra)
+    return root
+
+
+def test_identical_folders_pass(tmp_path, capsys):
+    rel, build = _folder(tmp_path / "rel"), _folder(tmp_path / "build")
+    reports = {r.doc: r for r in compare_folders(rel, build)}
+    assert reports["doc"].ok and reports["doc"].verdicts_same == reports["doc"].verdicts == 2
+    assert main(["verify", str(build), "--release", str(rel)]) == 0
+    out = capsys.readouterr().out
+    assert "doc: 1 tables, 2 rows compared, verdicts identical 2/2" in out
+
+
+def test_a_changed_verdict_and_a_moved_number_fail(tmp_path, capsys):
+    rel = _folder(tmp_path / "rel")
+    changed = COMP.replace("12.5,mismatch", "12.9,match")
+    build = _folder(tmp_path / "build", comp=changed)
+    rep = {r.doc: r for r in compare_folders(rel, build)}["doc"]
+    assert rep.verdicts_same == 1
+    assert {d.column for d in rep.differences} == {"reproduced", "verdict"}
+    assert rep.largest == pytest.approx(0.4 / 12.5)
+    assert "doc/comparison.csv, row 2" in rep.largest_at
+    assert main(["verify", str(build), "--release", str(rel)]) == 1
+    assert "row 2, column verdict: release 'mismatch', build 'match'" in capsys.readouterr().out
+
+
+def test_missing_and_extra_tables_fail(tmp_path):
+    rel = _folder(tmp_path / "rel", extra="a\n1\n")
+    build = _folder(tmp_path / "build")
+    (build / "doc" / "new.csv").write_text("a\n1\n")
+    rep = {r.doc: r for r in compare_folders(rel, build)}["doc"]
+    assert any("extra.csv: missing from the build" in p for p in rep.problems)
+    assert any("new.csv: in the build, not in the release" in p for p in rep.problems)
+
+
+def test_verify_without_a_build_says_what_to_run(tmp_path, capsys):
+    rel = _folder(tmp_path / "rel")
+    assert main(["verify", str(tmp_path / "nothing"), "--release", str(rel)]) == 2
+    assert "run `snakemake -c2` first" in capsys.readouterr().err
+
+
+def test_release_copies_and_refuses_to_overwrite(tmp_path, capsys):
+    build = _folder(tmp_path / "build")
+    to = tmp_path / "reports" / "v9.9.9"
+    assert main(["release", str(build), "--to", str(to)]) == 0
+    assert (to / "doc" / "comparison.csv").read_text() == COMP
+    (build / "doc" / "comparison.csv").write_text(COMP.replace("0.1235", "0.2"))
+    assert main(["release", str(build), "--to", str(to)]) == 2
+    assert "add --force" in capsys.readouterr().err
+    assert (to / "doc" / "comparison.csv").read_text() == COMP  # untouched
+    assert main(["release", str(build), "--to", str(to), "--force"]) == 0
+    assert "0.2" in (to / "doc" / "comparison.csv").read_text()
