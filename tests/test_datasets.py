@@ -442,3 +442,38 @@ def test_every_configured_scenario_generates():
         small = dict(spec, runs=2)
         ds = datasets.generate(name, small)
         assert ds.z[ds.coords[0]].shape == (2, spec["n_samples"])
+
+
+def test_a_truncated_manifest_names_the_rebuild_command(tmp_path):
+    pq, mf = tmp_path / "ex.parquet", tmp_path / "ex.manifest.json"
+    datasets.write(datasets.generate("ex", _example()), pq, mf)
+    mf.write_text(mf.read_text()[:40])  # an interrupted copy
+    with pytest.raises(AbglibValueError, match=r"not a complete dataset manifest") as err:
+        datasets.read(pq)
+    assert f"snakemake -c2 --forcerun {pq}" in str(err.value)
+
+
+def test_a_truncated_parquet_names_the_rebuild_command(tmp_path):
+    pq, mf = tmp_path / "ex.parquet", tmp_path / "ex.manifest.json"
+    datasets.write(datasets.generate("ex", _example()), pq, mf)
+    pq.write_bytes(pq.read_bytes()[:100])
+    with pytest.raises(AbglibValueError, match=rf"--forcerun {pq}"):
+        datasets.read(pq)
+
+
+def test_a_failed_script_says_why_on_the_console(tmp_path):
+    """log_to: the traceback goes to the log, the message to the console (stderr)."""
+    import subprocess
+    import sys
+
+    log = tmp_path / "job.log"
+    code = (
+        "from abglib.reporting.pipeline import log_to\n"
+        f"log_to({str(log)!r})\n"
+        "raise ValueError('rebuild with snakemake -c2 --forcerun x')\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert out.returncode == 1
+    assert "ValueError: rebuild with snakemake -c2 --forcerun x" in out.stderr
+    assert f"full traceback in {log}" in out.stderr
+    assert "Traceback" in log.read_text() and "Traceback" not in out.stderr

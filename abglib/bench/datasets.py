@@ -553,17 +553,27 @@ def read(parquet_path, manifest_path=None) -> Dataset:
         manifest_path = parquet_path.with_name(
             parquet_path.name.removesuffix(".parquet") + ".manifest.json"
         )
-    manifest = json.loads(Path(manifest_path).read_text(encoding="utf-8"))
+    rebuild = (
+        f"; the files are damaged (an interrupted copy?): rebuild them with "
+        f"`snakemake -c2 --forcerun {parquet_path}`"
+    )
+    try:
+        manifest = json.loads(Path(manifest_path).read_text(encoding="utf-8"))
+        expected = [c["name"] for c in manifest["schema"]]
+    except (json.JSONDecodeError, KeyError, TypeError) as exc:
+        raise AbglibValueError(
+            f"{manifest_path} is not a complete dataset manifest ({exc}){rebuild}"
+        ) from None
     if manifest.get("parquet_sha256") not in (None, _sha256(parquet_path)):
         raise AbglibValueError(
-            f"{parquet_path} does not match its manifest {manifest_path} (sha256 differs); "
-            "rebuild the dataset"
+            f"{parquet_path} does not match its manifest {manifest_path} (sha256 differs)"
+            + rebuild
         )
     table = pq.read_table(parquet_path)
-    expected = [c["name"] for c in manifest["schema"]]
     if table.column_names != expected:
         raise AbglibValueError(
             f"{parquet_path} has columns {table.column_names}, manifest says {expected}"
+            + rebuild
         )
     runs, n = int(manifest["runs"]), int(manifest["n_samples"])
     coords = tuple(manifest["coords"])

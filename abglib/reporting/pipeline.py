@@ -124,10 +124,21 @@ def config_errors(config: Mapping, schema_path) -> list[str]:
 def log_to(path) -> logging.Logger:
     """Send stderr and a logger named ``abglib.pipeline`` to the rule's log file.
 
-    Call first thing in a workflow script (``log_to(snakemake.log[0])``).
+    Call first thing in a workflow script (``log_to(snakemake.log[0])``). An uncaught
+    exception is written to the log with its traceback, and its message to the console.
     """
     fh = open(path, "w", encoding="utf-8")  # noqa: SIM115 - lives as long as the script
+    console = sys.stderr
     sys.stderr = fh
+
+    def excepthook(kind, value, tb):
+        # the traceback goes to the log; the message also to the console, so that a
+        # failed job says what to do where the user is looking
+        sys.__excepthook__(kind, value, tb)
+        fh.flush()
+        print(f"{kind.__name__}: {value}\n(full traceback in {path})", file=console)
+
+    sys.excepthook = excepthook
     logger = logging.getLogger("abglib.pipeline")
     logger.handlers[:] = [logging.StreamHandler(fh)]
     logger.setLevel(logging.INFO)
