@@ -154,10 +154,13 @@ def test_scorecard_counts_add_up():
         "explained",
         "not_reproducible",
         "total",
+        "robust",
+        "fragile",
     ]
     row = card.iloc[0]
     assert row["match"] + row["mismatch"] + row["explained"] + row["not_reproducible"] == 5
     assert row["total"] == 5
+    assert row["robust"] == row["fragile"] == 0  # no row depends on an assumed input
 
 
 @pytest.mark.parametrize(
@@ -256,3 +259,32 @@ def test_non_matches_keeps_only_rows_to_judge():
     assert list(out.columns) == ["item", "published", "reproduced", "verdict", "note"]
     with pytest.raises(AbglibValueError, match="lacks columns"):
         non_matches(comp.drop(columns="note"))
+
+
+@pytest.mark.parametrize(
+    "x, spec, text",
+    [
+        (0.123456789012, 4, "0.1235"),
+        (3.2e-16, "<1e-12", "<1e-12"),  # round-off: the bound, not the noise
+        (-4e-13, "<1e-12", "<1e-12"),
+        (0.25, "<1e-12", "0.25"),
+        (0.123456789, "<1e-9:3", "0.123"),
+        (float("nan"), "<1e-12", ""),
+    ],
+)
+def test_format_cell_at_the_declared_precision(x, spec, text):
+    from abglib.reporting.compare import format_cell
+
+    assert format_cell(x, spec) == text
+
+
+def test_write_csv_uses_the_tables_declared_precision(tmp_path):
+    df = pd.DataFrame({"a": [1.23456789], "noise": [2e-17], "b": [9.87654321]})
+    df.attrs["precision"] = {"a": 3, "noise": "<1e-12"}
+    write_csv(df, tmp_path / "t.csv")
+    assert (tmp_path / "t.csv").read_text() == "a,noise,b\n1.23,<1e-12,9.87654321\n"
+    df.attrs["precision"] = {"missing": 3}
+    with pytest.raises(AbglibValueError, match=r"columns the table lacks: \['missing'\]"):
+        write_csv(df, tmp_path / "u.csv")
+    with pytest.raises(AbglibValueError, match="a precision must be digits"):
+        write_csv(df, tmp_path / "v.csv", precision={"a": "1e-3"})

@@ -50,6 +50,7 @@ __all__ = [
     "VERDICTS",
     "Alternative",
     "build_comparison",
+    "format_cell",
     "format_number",
     "format_table",
     "judge",
@@ -152,24 +153,64 @@ def format_number(x, digits: int = SIGNIFICANT_DIGITS) -> str:
     return f"{xf:.{digits}g}"
 
 
-def format_table(df: pd.DataFrame, digits: int = SIGNIFICANT_DIGITS) -> pd.DataFrame:
-    """Copy of ``df`` with every float column formatted by :func:`format_number`."""
+def format_cell(x, spec) -> str:
+    """Format one number under a column's declared precision.
+
+    ``spec`` is an int (significant digits) or a string ``"<B"`` with ``B`` a number
+    (e.g. ``"<1e-12"``): a round-off column, whose values below ``B`` in magnitude are
+    written as the bound ``<B`` (their digits are noise), others with 10 significant
+    digits; ``"<B:n"`` writes the others with ``n`` digits.
+    """
+    if isinstance(spec, str):
+        body = spec[1:] if spec.startswith("<") else ""
+        bound, _, n = body.partition(":")
+        try:
+            limit = float(bound)
+        except ValueError:
+            raise AbglibValueError(
+                f"a precision must be digits (int) or '<bound' such as '<1e-12', got {spec!r}"
+            ) from None
+        if x is not None and not isinstance(x, (str, bool, np.bool_)):
+            xf = float(x)
+            if not math.isnan(xf) and abs(xf) < limit:
+                return f"<{bound}"
+        return format_number(x, int(n) if n else SIGNIFICANT_DIGITS)
+    return format_number(x, int(spec))
+
+
+def format_table(
+    df: pd.DataFrame, digits: int = SIGNIFICANT_DIGITS, precision=None
+) -> pd.DataFrame:
+    """Copy of ``df`` with every float column formatted at its precision.
+
+    ``precision`` (default ``df.attrs["precision"]``) maps a column to its declared
+    precision (:func:`format_cell`): the digits it is reproducible to. Other columns get
+    ``digits`` significant digits.
+    """
+    precision = dict(df.attrs.get("precision", {}) if precision is None else precision)
+    unknown = sorted(set(precision) - set(df.columns))
+    if unknown:
+        raise AbglibValueError(f"precision declared for columns the table lacks: {unknown}")
     out = df.copy()
     for col in out.columns:
+        spec = precision.get(col, digits)
         if pd.api.types.is_float_dtype(out[col]) or out[col].dtype == object:
-            out[col] = [format_number(v, digits) if not isinstance(v, str) else v for v in out[col]]
+            out[col] = [format_cell(v, spec) if not isinstance(v, str) else v for v in out[col]]
     return out
 
 
-def write_csv(df: pd.DataFrame, path, digits: int = SIGNIFICANT_DIGITS) -> None:
-    """Write ``df`` as CSV with fixed significant digits, atomically.
+def write_csv(df: pd.DataFrame, path, digits: int = SIGNIFICANT_DIGITS, precision=None) -> None:
+    """Write ``df`` as CSV at each column's declared precision, atomically.
 
-    The table goes to a temporary file beside ``path`` that replaces ``path`` only once
-    complete, so an interrupted run never leaves a half-written table behind.
+    Numbers get ``digits`` significant digits unless ``precision`` (default
+    ``df.attrs["precision"]``, set where the table is made) declares fewer for a column,
+    or a bound for a round-off column (:func:`format_cell`), so that a rebuild on any
+    machine writes identical bytes. The table goes to a temporary file beside ``path``
+    that replaces it only once complete: an interrupted run leaves no half-written table.
     """
     from .pipeline import atomic_output
 
-    text = format_table(df, digits).to_csv(index=False, lineterminator="\n")
+    text = format_table(df, digits, precision).to_csv(index=False, lineterminator="\n")
     with atomic_output(path) as tmp:
         tmp.write_text(text, encoding="utf-8", newline="")
 
