@@ -10,6 +10,9 @@
     Cut a release: copy a build to ``reports/v<version>``. The one deliberate step that
     writes the committed release (a build never does); it refuses to replace an existing
     release folder without ``--force``.
+``abglib findings``
+    Rewrite the README's findings from the release's tables (``docs/findings.md`` is the
+    template); ``--check`` only reports whether the README is current.
 """
 
 from __future__ import annotations
@@ -37,6 +40,11 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("build", nargs="?", type=Path, default=BUILD, help=f"default: {BUILD}")
     r.add_argument("--to", type=Path, default=RELEASE, help=f"default: {RELEASE}")
     r.add_argument("--force", action="store_true", help="replace an existing release folder")
+    f = sub.add_parser("findings", help="rewrite the README's findings from a release")
+    f.add_argument("--release", type=Path, default=RELEASE, help=f"default: {RELEASE}")
+    f.add_argument("--readme", type=Path, default=Path("README.md"))
+    f.add_argument("--template", type=Path, default=Path("docs") / "findings.md")
+    f.add_argument("--check", action="store_true", help="exit 1 if the README is not current")
     return p
 
 
@@ -71,8 +79,7 @@ def release(build: Path, to: Path, force: bool = False) -> int:
     if to.exists():
         if not force:
             print(
-                f"abglib release: {to} exists; a release is replaced only on purpose: "
-                "add --force",
+                f"abglib release: {to} exists; a release is replaced only on purpose: add --force",
                 file=sys.stderr,
             )
             return 2
@@ -82,10 +89,23 @@ def release(build: Path, to: Path, force: bool = False) -> int:
     return 0
 
 
+def findings(release: Path, readme: Path, template: Path, check: bool) -> int:
+    from .findings import update_readme
+
+    same = update_readme(readme, template, release, check=check)
+    if check and not same:
+        print(f"{readme}: findings differ from {release}; run `abglib findings`", file=sys.stderr)
+        return 1
+    print(f"{readme}: findings {'current' if same else 'rewritten'} from {release}")
+    return 0
+
+
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     if args.command == "verify":
         return verify(args.build, args.release, args.limit)
+    if args.command == "findings":
+        return findings(args.release, args.readme, args.template, args.check)
     return release(args.build, args.to, args.force)
 
 

@@ -152,9 +152,7 @@ def format_report(reports: list[DocReport], limit: int = 5) -> str:
     for r in reports:
         status = "identical within the written precision" if r.ok else "DIFFERS"
         verdicts = f", verdicts identical {r.verdicts_same}/{r.verdicts}" if r.verdicts else ""
-        largest = (
-            f", largest deviation {r.largest:.3g} at {r.largest_at}" if r.largest > 0 else ""
-        )
+        largest = f", largest deviation {r.largest:.3g} at {r.largest_at}" if r.largest > 0 else ""
         lines.append(
             f"{r.doc}: {r.tables} tables, {r.rows} rows compared{verdicts}{largest}: {status}"
         )
