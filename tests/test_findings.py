@@ -67,6 +67,6 @@ def test_the_readme_holds_the_findings_of_the_committed_release():
     release = REPO / "reports" / f"v{__version__}"
     if not (release / "scorecard.csv").is_file():
         pytest.skip(f"no committed release {release} yet")
-    assert update_readme(REPO / "README.md", REPO / "docs" / "findings.md", release, check=True), (
-        "README.md findings are stale: run `abglib findings`"
-    )
+    assert update_readme(
+        REPO / "README.md", REPO / "docs" / "readme_findings.md", release, check=True
+    ), "README.md findings are stale: run `abglib findings`"

@@ -11,7 +11,7 @@
     writes the committed release (a build never does); it refuses to replace an existing
     release folder without ``--force``.
 ``abglib findings``
-    Rewrite the README's findings from the release's tables (``docs/findings.md`` is the
+    Rewrite the README's findings from the release's tables (``docs/readme_findings.md`` is the
     template); ``--check`` only reports whether the README is current.
 """
 
@@ -43,7 +43,7 @@ def _parser() -> argparse.ArgumentParser:
     f = sub.add_parser("findings", help="rewrite the README's findings from a release")
     f.add_argument("--release", type=Path, default=RELEASE, help=f"default: {RELEASE}")
     f.add_argument("--readme", type=Path, default=Path("README.md"))
-    f.add_argument("--template", type=Path, default=Path("docs") / "findings.md")
+    f.add_argument("--template", type=Path, default=Path("docs") / "readme_findings.md")
     f.add_argument("--check", action="store_true", help="exit 1 if the README is not current")
     return p
 

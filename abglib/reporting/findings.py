@@ -1,6 +1,6 @@
 """The README's findings, formatted from a release's tables (never typed by hand).
 
-``docs/findings.md`` is a template: prose with placeholders
+``docs/readme_findings.md`` is a template: prose with placeholders
 ``{{<doc>/<table> | <column>=<value> | <column> | <format>}}`` (format optional, a Python
 format spec such as ``.3g``), resolved against ``reports/v<version>/<doc>/tables/
 <table>.csv``, and ``{{scorecard}}``, the scorecard as a Markdown table. The rendered
