@@ -26,4 +26,16 @@ rule all:
 
 onsuccess:
     if Path(f"{REPORTS}/index.html").exists():
-        print(f"\nReports: {Path(REPORTS, 'index.html').resolve()}", file=sys.stderr)
+        print(
+            f"\nReports: {Path(REPORTS, 'index.html').resolve()}", file=sys.stderr
+        )
+
+
+onerror:
+    print(
+        "\nThe build stopped: a job failed (its message and log are named above) or it was "
+        "interrupted.\nTo resume, run `snakemake -c2` again: finished jobs are kept and "
+        "interrupted ones rerun.\nAfter a killed build (SIGKILL, a crash) run "
+        "`snakemake --unlock` once first. See README, 'When a build is interrupted'.",
+        file=sys.stderr,
+    )
