@@ -69,6 +69,8 @@ REPORT_CONTENT = {
             "row7",
             "damping_lags",
             "responses",
+            "captions",
+            "robustness",
         ],
     },
     "huang": {
