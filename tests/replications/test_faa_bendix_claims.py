@@ -1,47 +1,76 @@
-"""FAA Bendix filter test (seed 003): the program, the memo's closed form, verdicts, damping."""
+"""FAA Bendix filter test (seed 003): every published claim, through the claim model.
+
+Each claim's compute function is checked against an independent route (a transfer function
+run by scipy, the discrete Lyapunov solution, a Monte Carlo, inputs and roundings written
+out by hand) or a pinned value with its derivation; the module's own science (the literal
+program, the closed form, damping, lags) keeps its tests from before the port.
+"""
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
+import re
 
 import numpy as np
 import pandas as pd
 import pytest
+from scipy.signal import lfilter
 
 from abglib import Gains, design, track
 from abglib.analysis import vrf
+from abglib.replications import evaluate
+from abglib.replications.faa_bendix import printed
 from abglib.replications.faa_bendix import program as bendix
-from abglib.reporting.compare import build_comparison, read_published
+from abglib.replications.faa_bendix.claims import CLAIMS
+from abglib.reporting.compare import tolerance_from_printed
 from abglib.simulate import bendix_impulse, bendix_ramp
 
-ROOT = Path(__file__).resolve().parents[1]
+from .conftest import claim_test, published, small_config, study_for
+
+DOC = "faa_bendix"
+PERIODS = range(1, 9)
+KINDS = ("impulse", "ramp")
 
 
-def _script():
-    spec = importlib.util.spec_from_file_location(
-        "faa_bendix_script", ROOT / "workflow" / "scripts" / "faa_bendix.py"
-    )
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+@pytest.fixture(scope="module")
+def study():
+    return study_for(DOC, small_config())
 
 
-# --------------------------------------------------------------------------- the program
-@pytest.mark.parametrize("period", bendix.PERIODS)
-def test_inputs_as_the_letter_report_writes_them(period):
-    T = float(period)
-    imp = bendix_impulse(40, T)
-    # "a pulse of amplitude 1/T and width T ... at the first sampling"
-    assert imp[0] == 1.0 / T and np.count_nonzero(imp) == 1 and imp.size == 40
-    ramp = bendix_ramp(40, T, rise_samples=10)
-    # "zero at the first sampling ... raised by the value of T each sampling for 10
-    # periods ... then held at zero"
-    assert ramp[0] == 0.0 and np.allclose(np.diff(ramp[:11]), T) and ramp[10] == 10 * T
-    assert np.all(ramp[11:] == 0.0)
+@pytest.fixture(scope="module")
+def judged(study):
+    """comparison and robustness at the small config (the sweep is the nominal one)."""
+    pub = published(DOC)
+    comp, points = evaluate(DOC, CLAIMS, pub, study, lambda c: type(study)(c, pub))
+    return comp.assign(key=pub["key"].to_numpy()).set_index("key"), points
 
 
-@pytest.mark.parametrize("period", [1, 3, 8])
+def value(study, key):
+    return CLAIMS.compute(study, key).value
+
+
+def keys(pattern):
+    return [k for k in published(DOC)["key"] if re.fullmatch(pattern, k)]
+
+
+def params(pattern):
+    return [pytest.param(k, marks=claim_test(DOC, k), id=k) for k in keys(pattern)]
+
+
+# --------------------------------------------------------------------------- the letter report
+@claim_test(DOC, "program.equations")
+def test_program_equations_are_the_alpha_beta_transfer_function(study):
+    assert value(study, "program.equations") is True
+    # independent route: X̄/X = z(αz + β - α) / (z² - (2 - α - β)z + (1 - α)) (seed 000 with
+    # γ = 0), run by scipy from rest on the same inputs
+    resp = study.responses
+    for (table, p, kind), d in resp.groupby(["table", "period_s", "input"]):
+        g = study.gains(p, table, kind)
+        a, b = g.alpha, g.beta
+        xs = lfilter([a, b - a], [1.0, a + b - 2.0, 1.0 - a], d["z"].to_numpy())
+        np.testing.assert_allclose(d["x_smooth"], xs, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("period", PERIODS)
 def test_literal_program_equals_track_with_zero_init(period):
     g = design.bendix(period, "captions")
     for z in (bendix_impulse(40, period), bendix_ramp(40, period)):
@@ -61,30 +90,95 @@ def test_impulse_response_first_samples_by_hand():
     assert lit["x_pred"][1] == pytest.approx(a / T + b / T)
 
 
-def test_responses_table_and_sfy():
-    r = bendix.responses(design.bendix(2), 2.0)
-    assert set(r["input"]) == {"impulse", "ramp"} and len(r) == 80
-    assert bendix.sfy("impulse", 5) == 0.10  # captions: SFY= 0.10
-    assert bendix.sfy("ramp", 1) == 1.00 and bendix.sfy("ramp", 2) == 10.00
+@claim_test(DOC, "program.impulse")
+@pytest.mark.parametrize("period", PERIODS)
+def test_impulse_input_as_the_letter_report_writes_it(study, period):
+    assert value(study, "program.impulse") is True
+    T = float(period)
+    imp = study.input("impulse", period)
+    # "a pulse of amplitude 1/T and width T ... at the first sampling"
+    assert imp[0] == 1.0 / T and np.count_nonzero(imp) == 1 and imp.size == 40
+
+
+@claim_test(DOC, "program.ramp")
+@pytest.mark.parametrize("period", PERIODS)
+def test_ramp_input_as_the_letter_report_writes_it(study, period):
+    assert value(study, "program.ramp") is True
+    T = float(period)
+    ramp = study.input("ramp", period)
+    # "zero at the first sampling ... raised by the value of T each sampling for 10
+    # periods ... then held at zero", written out by hand
+    expected = np.concatenate([np.arange(11) * T, np.zeros(29)])
+    np.testing.assert_array_equal(ramp, expected)
+    assert ramp[0] == 0.0 and np.allclose(np.diff(ramp[:11]), T) and ramp[10] == 10 * T
+    assert np.all(ramp[11:] == 0.0)
+
+
+@claim_test(DOC, "program.ramp.periods")
+def test_ramp_rises_for_the_configured_periods(study):
+    assert value(study, "program.ramp.periods") == 10.0
+    # the count is read off the generated input, not the config: another rise shows
+    cfg = {DOC: dict(small_config()[DOC], ramp_rise_samples=7)}
+    other = type(study)(cfg, published(DOC))
+    assert value(other, "program.ramp.periods") == 7.0
+
+
+@claim_test(DOC, "program.intervals")
+def test_forty_intervals(study):
+    assert value(study, "program.intervals") == 40.0
+    assert len(study.responses) == 2 * 8 * 2 * 40  # tables x periods x inputs x samples
+
+
+@claim_test(DOC, "program.graphs")
+def test_six_graphs(study):
+    # "1. IMPULSE RESPONSE, SMOOTHED POSITION ... 6. RAMP RESPONSE, PREDICTED POSITION"
+    assert value(study, "program.graphs") == 6.0
+    assert bendix.INPUTS == ("impulse", "ramp") and len(bendix.GRAPHS) == 3
+
+
+def test_program_input_rejects_other_kinds():
     with pytest.raises(ValueError, match="kind must be one of"):
-        bendix.sfy("step", 1)
+        bendix.program_input("step", 40, 1.0, 10)
 
 
 # --------------------------------------------------------------------------- the memo
-@pytest.mark.parametrize("period", bendix.PERIODS)
-def test_memo_closed_form_equals_lyapunov(period):
-    g = design.bendix(period)
-    cf = bendix.memo_ratios(g.alpha, g.beta, period)
-    ly = vrf(g, dt=period)
-    assert cf["position"] == pytest.approx(np.sqrt(ly["x_smooth"]), rel=1e-12)
-    assert cf["velocity"] == pytest.approx(np.sqrt(ly["v_smooth"]), rel=1e-12)
+def _zeta(a, b, T):
+    """Damping ratio of s = ln(z)/T, z a root of z² - (2 - α - β)z + (1 - α)."""
+    z = np.roots([1.0, a + b - 2.0, 1.0 - a])[0]
+    s = np.log(complex(z)) / T
+    return -s.real / abs(s)
 
 
-def test_memo_worked_example():
-    # memo: T = 3 s, "0.69 x 1 deg = .69 deg" and "0.125 x 1 deg = .125 deg/sec"
-    cf = bendix.memo_ratios(0.465, 0.300, 3.0)
-    assert round(cf["position"], 2) == 0.69
-    assert round(cf["velocity"], 3) == 0.125
+@pytest.mark.parametrize("key", params(r"memo\.T\d+\.(alpha|beta)"))
+def test_memo_gains_are_inputs_not_reproducible(study, judged, key):
+    p = int(key.split(".")[1][1:])
+    res = CLAIMS.compute(study, key)
+    assert res.value is None and "not among the seeds" in res.note
+    g = study.gains(p)
+    assert f"zeta = {_zeta(g.alpha, g.beta, p):.3f}" in res.note
+    assert judged[0].loc[key, "verdict"] == "not_reproducible"
+
+
+def test_memo_gains_are_the_library_tables():
+    # abglib.design's Bendix tables (public API) transcribe the same printed numbers
+    memo = printed.memo_gains(published(DOC))
+    caps = printed.captions(published(DOC))
+    for p in PERIODS:
+        assert design.bendix(p) == Gains(*memo.loc[p, ["alpha", "beta"]])
+        c = caps[(caps["period_s"] == p)]
+        assert len(c) == 2
+        for r in c.itertuples():
+            assert design.bendix(p, "captions") == Gains(r.alpha, r.beta)
+
+
+@pytest.mark.parametrize("key", params(r"memo\.T\d+\.(position|velocity)"))
+def test_memo_ratio_is_the_lyapunov_vrf(study, key):
+    _, p, k = key.split(".")
+    p = int(p[1:])
+    g = study.gains(p)
+    ly = vrf(g, dt=p)
+    exact = np.sqrt(ly["x_smooth" if k == "position" else "v_smooth"])
+    assert value(study, key) == pytest.approx(exact, rel=1e-12)
 
 
 def test_memo_closed_form_vs_small_monte_carlo():
@@ -104,36 +198,146 @@ def test_memo_ratios_reject_unstable_gains():
         bendix.memo_ratios(0.5, 3.5, 1.0)
 
 
-# --------------------------------------------------------------------------- comparison rows
-@pytest.fixture(scope="module")
-def comparison(tmp_path_factory):
-    mod = _script()
-    published = read_published([ROOT / "data" / "published" / "faa_bendix" / "memo.csv"])
-    periods = list(bendix.PERIODS)
-    mc = {"runs": 4, "samples": 2000, "burn_in": 100, "seed": 7}
-    memo = mod.memo_table(published, periods, mc)
-    rounding = mod.rounding_table(published, periods, 41)
-    rep, alts = mod.reproduced_tables(published, memo, rounding)
-    return build_comparison("faa_bendix", published, rep, alts).set_index("item")
+def test_row_7s_is_a_match(judged):
+    comp = judged[0]
+    assert list(comp.loc[["memo.T7.position", "memo.T7.velocity"], "verdict"]) == [
+        "match",
+        "match",
+    ]
 
 
-def test_row_7s_is_a_match(comparison):
-    rows = comparison[comparison.index.str.contains("period 7 s")]
-    assert list(rows["verdict"]) == ["match", "match"]
-
-
-def test_row_1s_position_is_explained_by_rounding(comparison):
-    row = comparison.loc[
-        comparison.index.str.contains("period 1 s") & comparison.index.str.contains("sigma_xdot")
-    ].iloc[0]
+def test_row_1s_position_is_explained_by_rounding(judged):
+    row = judged[0].loc["memo.T1.position"]
     assert row["verdict"] == "explained"
     assert "unrounded gains" in row["note"]
-    assert row["abs_err"] == pytest.approx(0.00063, abs=1e-5)
+    assert float(row["abs_err"]) == pytest.approx(0.00063, abs=1e-5)
 
 
-def test_verdict_counts(comparison):
-    counts = comparison["verdict"].value_counts().to_dict()
-    assert counts == {"match": 19, "explained": 1, "not_reproducible": 1}
+@claim_test(DOC, "memo.example.angle")
+def test_memo_worked_example_angle(study):
+    # memo: T = 3 s, "0.69 x 1 deg = .69 deg" (alpha .465, beta .300)
+    assert round(value(study, "memo.example.angle"), 2) == 0.69
+    assert value(study, "memo.example.angle") == bendix.memo_ratios(0.465, 0.300, 3.0)["position"]
+
+
+@claim_test(DOC, "memo.example.rate")
+def test_memo_worked_example_rate(study):
+    # memo: "0.125 x 1 deg = .125 deg/sec"
+    assert round(value(study, "memo.example.rate"), 3) == 0.125
+    assert value(study, "memo.example.rate") == bendix.memo_ratios(0.465, 0.300, 3.0)["velocity"]
+
+
+@claim_test(DOC, "memo.claim.columns")
+def test_memo_columns_are_per_second_not_per_sample(study):
+    assert value(study, "memo.claim.columns") is True
+    for p in range(2, 9):
+        g = study.gains(p)
+        printed_v = study.printed(f"memo.T{p}.velocity")
+        per_sample = np.sqrt(vrf(g, dt=1.0)["v_smooth"])  # sqrt(k_v) T, T-free
+        assert abs(per_sample - float(printed_v)) > tolerance_from_printed(printed_v)
+
+
+@claim_test(DOC, "memo.claim.reduction")
+def test_memo_ratios_are_reductions(study):
+    assert value(study, "memo.claim.reduction") is True
+    assert all(np.sqrt(vrf(study.gains(p), dt=p)["x_smooth"]) < 1 for p in PERIODS)
+
+
+@claim_test(DOC, "memo.claim.optimum")
+def test_optimum_is_not_reproducible_and_gives_the_damping(study):
+    res = CLAIMS.compute(study, "memo.claim.optimum")
+    assert res.value is None
+    # beta / (alpha^2 / (2 - alpha)): 0.066 / (0.0625 / 1.75) = 1.85 ... 0.855 / 0.3082 = 2.77
+    ratios = [g.beta / (g.alpha**2 / (2 - g.alpha)) for g in map(study.gains, PERIODS)]
+    assert f"{min(ratios):.1f}-{max(ratios):.1f} times" in res.note
+    assert "1.8-2.8 times" in res.note and "underdamped" in res.note
+
+
+# --------------------------------------------------------------------------- the captions
+@pytest.mark.parametrize("key", params(r"captions\.(impulse|ramp)\.T\d+\.(alpha|beta)"))
+def test_caption_gain_is_the_memo_gain_cut_to_two_decimals(study, judged, key):
+    _, kind, p, name = key.split(".")
+    p = int(p[1:])
+    memo_printed = study.printed(f"memo.T{p}.{name}")
+    res = CLAIMS.compute(study, key)
+    assert res.value == float(memo_printed)
+    # by hand: the memo's three decimals truncated to two
+    truncated = np.floor(round(float(memo_printed) * 1000) / 10) / 100
+    assert res.readings[0].value == pytest.approx(truncated, abs=1e-12)
+    assert float(study.printed(key)) == pytest.approx(truncated, abs=1e-12)
+    # only beta = .066 (T = 1 s) is more than half a unit from its caption
+    expected = "explained" if (p, name) == (1, "beta") else "match"
+    assert judged[0].loc[key, "verdict"] == expected
+
+
+def test_caption_truncation_differs_from_rounding_for_eight_gains(study):
+    c = study.captions_table[study.captions_table["input"] == "ramp"]
+    differ = sum(
+        int((c[f"{n}_memo_rounded"] != c[f"{n}_memo_truncated"]).sum()) for n in ("alpha", "beta")
+    )
+    # .465, .645, .665 (alpha); .066, .175, .565, .685, .855 (beta) round up, the captions cut
+    assert differ == 8
+    assert (
+        printed.round_half_up(".465", "0.46") == 0.47 and printed.truncate(".465", "0.46") == 0.46
+    )
+
+
+@pytest.mark.parametrize("key", params(r"captions\.(impulse|ramp)\.T\d+\.period"))
+def test_caption_period_pairs_with_the_memo_row(study, key):
+    p = int(key.split(".")[2][1:])
+    assert value(study, key) == float(p) == float(study.printed(key))
+
+
+@pytest.mark.parametrize("key", params(r"captions\.(impulse|ramp)\.T\d+\.sfy"))
+def test_caption_sfy_reconstruction_and_its_robustness(study, judged, key):
+    _, kind, p, _ = key.split(".")
+    p = int(p[1:])
+    # by hand: the input peaks at 1/T (impulse) or 10 T (ramp); 10 divisions of a power of ten
+    peak = 1.0 / p if kind == "impulse" else 10.0 * p
+    by_hand = 10.0 ** np.ceil(np.log10(peak / 10.0) - 1e-12)
+    assert value(study, key) == pytest.approx(by_hand)
+    assert value(study, key) == float(study.printed(key))
+    comp, points = judged
+    row = comp.loc[key]
+    assert row["depends_on"] == "faa_bendix.plot_divisions"
+    # at 8 divisions the T = 1 s inputs (peak 1 and 10) need the next decade: flip
+    if p == 1:
+        assert row["verdict"] == "not_reproducible" and row["robust"] == "false"
+        assert "mismatch at 8, match at 10-12" in row["note"]
+    else:
+        assert row["verdict"] == "match" and row["robust"] == "true"
+    assert len(points[points["key"] == key]) == 3
+
+
+def test_power_of_ten_scale():
+    assert bendix.power_of_ten_scale(1.0, 10) == pytest.approx(0.1)
+    assert bendix.power_of_ten_scale(10.0, 10) == pytest.approx(1.0)
+    assert bendix.power_of_ten_scale(10.0, 8) == pytest.approx(10.0)
+    assert bendix.power_of_ten_scale(0.125, 10) == pytest.approx(0.1)
+
+
+def test_captions_table_and_sfy(study):
+    c = study.caption_values.set_index(["input", "period_s"])["sfy"]
+    assert c[("impulse", 5)] == 0.10  # captions: SFY= 0.10
+    assert c[("ramp", 1)] == 1.00 and c[("ramp", 2)] == 10.00
+
+
+# --------------------------------------------------------------------------- the report tables
+def test_verdict_counts(judged):
+    counts = judged[0]["verdict"].value_counts().to_dict()
+    assert counts == {"match": 85, "explained": 3, "not_reproducible": 19}
+
+
+def test_gains_table_columns(study):
+    gt = study.gains_table
+    assert isinstance(gt, pd.DataFrame) and len(gt) == 8
+    assert gt.loc[0, "beta_memo"] == 0.066 and gt.loc[0, "beta_captions"] == 0.06
+
+
+def test_tables_are_the_rule_outputs(study):
+    from abglib.replications.faa_bendix.study import TABLES
+
+    assert tuple(study.tables()) == TABLES
 
 
 # --------------------------------------------------------------------------- damping
@@ -156,12 +360,13 @@ def test_damping_classes(alpha, beta, cls):
     assert bendix.damping(alpha, beta)["cls"] == cls
 
 
-def test_bendix_gain_sets_are_underdamped_not_benedict():
-    for p in bendix.PERIODS:
-        g = design.bendix(p)
-        d = bendix.damping(g.alpha, g.beta, p)
-        assert d["stable"] and d["cls"] == "underdamped" and not d["benedict_bordner"]
-        assert 0 < d["zeta"] < 1
+def test_bendix_gain_sets_are_underdamped_not_benedict(study):
+    d = study.damping_lags
+    assert d["stable"].all() and (d["damping"] == "underdamped").all()
+    assert not d["benedict_bordner"].any()
+    for r in d.itertuples():
+        assert r.zeta == pytest.approx(_zeta(r.alpha, r.beta, r.period_s))
+        assert 0 < r.zeta < 1
 
 
 def test_lags_closed_form_vs_simulation():
@@ -171,11 +376,3 @@ def test_lags_closed_form_vs_simulation():
     assert exact["accel_x_smooth"] == pytest.approx(0.47 * 16.0 / 0.431)
     for k, v in exact.items():
         assert sim[k] == pytest.approx(v, abs=1e-6 * max(1.0, abs(v)))
-
-
-def test_gains_table_columns():
-    mod = _script()
-    resp = mod.response_table([1, 2], 40, 10)
-    gt = mod.gains_table(resp, [1, 2])
-    assert isinstance(gt, pd.DataFrame) and len(gt) == 2
-    assert gt.loc[0, "beta_memo"] == 0.066 and gt.loc[0, "beta_captions"] == 0.06
