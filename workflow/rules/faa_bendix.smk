@@ -2,20 +2,15 @@
 # A. I. Sinsky's memo on the expected smoothing. Impulse and ramp responses of the eight
 # gain sets, the memo's table, damping and lags.
 
+from abglib.replications.faa_bendix import study as faa_bendix_study
+
 FB = config.get("faa_bendix", {})
 if "faa_bendix" in DOCS and not FB:
     raise WorkflowError("config lists faa_bendix in docs but has no faa_bendix section")
 
 
-FAA_BENDIX_TABLES = [
-    "responses",
-    "gains",
-    "memo_table",
-    "rounding",
-    "row7",
-    "damping_lags",
-    "captions",
-]
+# the study's report tables (abglib.replications.faa_bendix.study.TABLES)
+FAA_BENDIX_TABLES = list(faa_bendix_study.TABLES)
 
 
 rule faa_bendix_reproduce:

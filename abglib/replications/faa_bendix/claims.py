@@ -92,9 +92,15 @@ def _graphs(s: FaaBendixStudy) -> Result:
 
 
 # --------------------------------------------------------------------------- the memo
+def _memo_key(key: str) -> tuple[int, str]:
+    """``'memo.T7.beta'`` -> ``(7, 'beta')``."""
+    p, name = re.fullmatch(r"memo\.T(\d+)\.(\w+)", key).groups()
+    return int(p), name
+
+
 @CLAIMS.family(r"memo\.T\d+\.(alpha|beta)")
 def _memo_gain(s: FaaBendixStudy, key: str) -> Result:
-    p = int(re.fullmatch(r"memo\.T(\d+)\..*", key).group(1))
+    p, _ = _memo_key(key)
     d = s.damping_lags.set_index("period_s").loc[p]
     return Result(
         None,
@@ -107,8 +113,7 @@ def _memo_gain(s: FaaBendixStudy, key: str) -> Result:
 
 @CLAIMS.family(r"memo\.T\d+\.(position|velocity)")
 def _memo_ratio(s: FaaBendixStudy, key: str) -> Result:
-    _, p, k = key.split(".")
-    p = int(p[1:])
+    p, k = _memo_key(key)
     m = s.memo_table.set_index("period_s").loc[p]
     value = float(m[f"{k}_closed"])
     note = ""
