@@ -126,7 +126,9 @@ def run_test_program(z, alpha: float, beta: float, T: float) -> dict:
     return {"x_smooth": xb, "v_smooth": xd, "x_pred": xp}
 
 
-def responses(gains: Gains, T: float, n: int = 40, rise_samples: int = 10) -> pd.DataFrame:
+def responses(
+    gains: Gains, T: float, n: int = 40, rise_samples: int = 10, kinds=INPUTS
+) -> pd.DataFrame:
     """Impulse and ramp responses of one gain set, as the test program computes them.
 
     Parameters
@@ -139,6 +141,8 @@ def responses(gains: Gains, T: float, n: int = 40, rise_samples: int = 10) -> pd
         Number of samples ("40 intervals").
     rise_samples : int, default 10
         Samples over which the ramp rises ("for 10 periods").
+    kinds : sequence of {'impulse', 'ramp'}, default both
+        The test inputs to run.
 
     Returns
     -------
@@ -147,7 +151,7 @@ def responses(gains: Gains, T: float, n: int = 40, rise_samples: int = 10) -> pd
         :func:`abglib.track` with ``init="zero"`` (the program's implied initial state).
     """
     frames = []
-    for kind in INPUTS:
+    for kind in kinds:
         z = program_input(kind, n, T, rise_samples)
         r = track(z, gains, dt=T, init="zero")
         frames.append(

@@ -13,7 +13,6 @@ import numpy as np
 import pandas as pd
 
 from ...analysis import vrf
-from ...engine import track
 from ...gains import Gains
 from ...reporting.compare import parse_printed, tolerance_from_printed
 from .._claims import Study
@@ -77,28 +76,20 @@ class FaaBendixStudy(Study):
     @cached_property
     def responses(self) -> pd.DataFrame:
         """Impulse and ramp responses of every gain set of both tables (long table)."""
+        c = self.cfg
         frames = []
         for table in GAIN_TABLES:
             for p in self.periods:
                 for kind in bendix.INPUTS:
                     g = self.gains(p, table, kind)
-                    z = self.input(kind, p)
-                    r = track(z, g, dt=float(p), init="zero")
-                    frames.append(
-                        pd.DataFrame(
-                            {
-                                "table": table,
-                                "period_s": p,
-                                "alpha": float(g.alpha),
-                                "beta": float(g.beta),
-                                "input": kind,
-                                "k": np.arange(z.size),
-                                "t": np.arange(z.size) * float(p),
-                                "z": z,
-                                **{out: getattr(r, out) for out in bendix.GRAPHS},
-                            }
-                        )
+                    r = bendix.responses(
+                        g, float(p), int(c["samples"]), int(c["ramp_rise_samples"]), (kind,)
                     )
+                    r.insert(0, "beta", float(g.beta))
+                    r.insert(0, "alpha", float(g.alpha))
+                    r.insert(0, "period_s", p)
+                    r.insert(0, "table", table)
+                    frames.append(r)
         return pd.concat(frames, ignore_index=True)
 
     @cached_property
