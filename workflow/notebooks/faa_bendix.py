@@ -98,6 +98,7 @@ def verdicts(prefix):
 
 # %%
 runs = responses.groupby(["table", "period_s", "input"]).ngroups
+graph_cols = [c for c in ("x_smooth", "v_smooth", "x_pred") if c in responses]
 ratio_rows = comparison[comparison["item"].str.startswith("Memo table, period")
                         & comparison["item"].str.contains("column sigma")]
 n_ratio_match = int((ratio_rows["verdict"] == "match").sum())
@@ -119,7 +120,7 @@ div_nominal = sweep.loc[sweep["nominal"].astype(str) == "True", "value"].iloc[0]
 div_values = sorted(sweep["value"].unique(), key=float)
 show(
     f"**The program.** A literal transcription of the equations and `abglib.track` agree on "
-    f"all {runs} runs × 3 graphs (both gain tables, {responses['period_s'].nunique()} periods, "
+    f"all {runs} runs × {len(graph_cols)} graphs (both gain tables, {responses['period_s'].nunique()} periods, "
     f"impulse and ramp). Section 1 shows the graphs with the captions' y scale factors (SFY), "
     f"run with the captions' two-digit gains and the memo's three-digit gains: the difference "
     f"stays below {others_sfy:.2f} of an SFY division except at T = 1 s, where β = "
