@@ -37,6 +37,8 @@ tables = {
         "row7",
         "damping_lags",
         "responses",
+        "captions",
+        "robustness",
     )
 }
 provenance = None
@@ -56,70 +58,129 @@ memo = pd.read_csv(tables["memo_table"])
 rounding = pd.read_csv(tables["rounding"])
 row7 = pd.read_csv(tables["row7"])
 damping = pd.read_csv(tables["damping_lags"])
+captions = pd.read_csv(tables["captions"])
+responses = pd.read_csv(tables["responses"])
+robustness = pd.read_csv(tables["robustness"], dtype={"value": str})
+memo_p = memo.set_index("period_s")
+rnd = rounding.set_index("period_s")
+damp = damping.set_index("period_s")
+cmp_verdict = comparison["verdict"].value_counts()
+
+
+def show(text):
+    """Display a paragraph whose numbers were formatted from the tables above."""
+    display(Markdown(text))
+
+
+def fmt(x, digits=3):
+    """A ratio or gain as the memo prints it: three decimals, no leading zero."""
+    return f"{x:.{digits}f}".replace("0.", ".", 1) if 0 <= x < 1 else f"{x:.{digits}f}"
 
 
 def verdicts(prefix):
     """Rows of comparison.csv whose item starts with ``prefix``."""
     return comparison[comparison["item"].str.startswith(prefix)][
-        ["item", "published", "reproduced", "abs_err", "tolerance", "verdict", "note"]
+        ["item", "published", "reproduced", "abs_err", "tolerance", "verdict", "note", "robust"]
     ]
 
 
 # %% [markdown]
 # ## Reading guide
 #
-# **What this report establishes.** The letter report's three difference equations are the
-# canonical α-β recursion (seed 000, eqs 1–6 with γ = 0, x_p(k+1) = x̄(k) + T·v̄(k)); a literal
-# transcription of them and `abglib.track` agree exactly on all 96 runs. The program states
-# no initial values; we start from zero (FORTRAN's zero-initialised variables), i.e.
-# `abglib.track(..., init="zero")`. Section 1 shows the six graphs of every gain set as small
-# multiples with the captions' y scale factors (SFY), run with the captions' two-digit gains
-# (the runs that were plotted) and the memo's three-digit gains; the difference is invisible
-# except at T = 1 s, where β = .06 instead of .066 moves the ramp graphs by up to a third of
-# an SFY division.
-#
-# **The memo's columns.** Headed σ_ẋ/σ_x and σ_ẍ/σ_x, they are in fact the *smoothed
-# position* ratio σ_x̄/σ_x = √k_x (dimensionless) and the *smoothed velocity* ratio
-# σ_v̄/σ_x = √k_v in 1/s with T in seconds (the memo's own example: ".125 × 1° = .125°/sec");
-# the dots mean "smoothed", not derivatives of the position error. k_x, k_v are the
-# Benedict–Bordner VRFs (section 2).
-#
-# **What holds.** 15 of the 16 printed ratios and the worked example (0.69°, .125°/s) are
-# the closed form for the printed gains to half a unit in the third decimal; the closed form
-# equals the Lyapunov solution to rounding error and agrees with a seeded Monte Carlo of 10⁷
-# samples per row. The 7 s row, which looks out of trend (0.861/0.158 between 0.820/0.142 and
-# 0.872/0.149), is *right for its printed gains*: the kink is in β = .855 itself (the captions
-# confirm β = 0.85 was run), not a slip in the ratios (section 3).
-#
-# **What does not, and why.** The 1 s position ratio is printed .491, the printed gains give
-# 0.4916 (1.3 tolerances off). Gains that still print as .250/.066 (α = 0.2495,
-# β = 0.0659) reproduce both printed ratios of the row together: the memo was computed from
-# unrounded gains (section 2b). "Optimum" cannot be checked: the criterion is in a Bendix
-# technical note we do not have. Beyond the source (section 4): all eight gain sets are
-# stable and markedly *underdamped* — β is 1.8–2.8 times the Benedict–Bordner β — with zero
-# steady-state lag to a ramp and a lag of T²/β (predicted) or (1 − α)T²/β (smoothed) per unit
-# acceleration.
-#
-# The scorecard of this document:
+# The letter report's three difference equations are the canonical α-β recursion (seed 000,
+# eqs 1–6 with γ = 0, x_p(k+1) = x̄(k) + T·v̄(k)). The program states no initial values; we
+# start from zero (FORTRAN's zero-initialised variables), i.e. `abglib.track(..., init="zero")`.
+# The memo's columns, headed σ_ẋ/σ_x and σ_ẍ/σ_x, are in fact the *smoothed position* ratio
+# σ_x̄/σ_x = √k_x (dimensionless) and the *smoothed velocity* ratio σ_v̄/σ_x = √k_v in 1/s with
+# T in seconds (the memo's own example: ".125 × 1° = .125°/sec"); the dots mean "smoothed",
+# not derivatives. k_x, k_v are the Benedict–Bordner VRFs (section 2). Every number below is
+# formatted from the tables this report ships with.
+
+# %%
+runs = responses.groupby(["table", "period_s", "input"]).ngroups
+graph_cols = [c for c in ("x_smooth", "v_smooth", "x_pred") if c in responses]
+ratio_rows = comparison[comparison["item"].str.startswith("Memo table, period")
+                        & comparison["item"].str.contains("column sigma")]
+n_ratio_match = int((ratio_rows["verdict"] == "match").sum())
+r1 = rnd.loc[1]
+p1 = memo_p.loc[1]
+tol1 = float(ratio_rows.loc[ratio_rows["item"].str.contains("period 1 s")
+                            & ratio_rows["item"].str.contains("xdot"), "tolerance"].iloc[0])
+cap_gain = comparison[comparison["item"].str.contains("captions")
+                      & comparison["item"].str.contains("ALPHA=|BETA=")]
+worst_sfy = gains.set_index("period_s").filter(like="_sfy").max(axis=1)
+others_sfy = worst_sfy.drop(index=1).max()
+mc_n = int(memo["mc_samples"].iloc[0])
+bb = damping["beta_over_benedict"]
+robust_n = int((comparison["robust"].astype(str) == "true").sum())
+fragile = comparison[comparison["robust"].astype(str) == "false"]
+unexplained_caps = "; ".join(cap_gain.loc[cap_gain["verdict"] != "match", "item"])
+sweep = robustness[robustness["input"] == "faa_bendix.plot_divisions"]
+div_nominal = sweep.loc[sweep["nominal"].astype(str) == "True", "value"].iloc[0]
+div_values = sorted(sweep["value"].unique(), key=float)
+show(
+    f"**The program.** A literal transcription of the equations and `abglib.track` agree on "
+    f"all {runs} runs × {len(graph_cols)} graphs (both gain tables, {responses['period_s'].nunique()} periods, "
+    f"impulse and ramp). Section 1 shows the graphs with the captions' y scale factors (SFY), "
+    f"run with the captions' two-digit gains and the memo's three-digit gains: the difference "
+    f"stays below {others_sfy:.2f} of an SFY division except at T = 1 s, where β = "
+    f"{p1['beta_captions']:.2f} instead of {fmt(p1['beta'])} moves the graphs by up to "
+    f"{worst_sfy.loc[1]:.2f} of a division.\n\n"
+    f"**The captions.** {int((cap_gain['verdict'] == 'match').sum())} of the {len(cap_gain)} "
+    f"caption gains are the memo's to half a unit in their second decimal; the other "
+    f"{int((cap_gain['verdict'] != 'match').sum())} ({unexplained_caps}) are "
+    f"{'/'.join(sorted(set(cap_gain.loc[cap_gain['verdict'] != 'match', 'verdict'])))}: every "
+    f"caption gain is the memo's *truncated*, not rounded, to two decimals. The printed SFY "
+    f"(a power of ten on every graph) is what fits each input's peak in {div_nominal} grid "
+    f"divisions — a reconstruction that depends on the plot height, which the document never "
+    f"gives: across {', '.join(div_values)} divisions {robust_n} rows keep their verdict and "
+    f"{len(fragile)} flip ({'; '.join(fragile['item'])}; section 1b).\n\n"
+    f"**The memo.** {n_ratio_match} of the {len(ratio_rows)} printed ratios and the worked "
+    f"example are the closed form for the printed gains to half a unit in the third decimal; "
+    f"the closed form equals the Lyapunov solution to rounding error and agrees with a seeded "
+    f"Monte Carlo of {mc_n:,} samples per row. The 1 s position ratio is printed "
+    f"{fmt(p1['position_published'])}; the printed gains give {p1['position_closed']:.4f} "
+    f"({abs(p1['position_closed'] - p1['position_published']) / tol1:.1f} tolerances off). "
+    f"Gains that still print as {fmt(p1['alpha'])}/{fmt(p1['beta'])} (α = "
+    f"{r1['best_alpha']:.4f}, β = {r1['best_beta']:.4f}) reproduce both printed ratios of the "
+    f"row together: the memo was computed from unrounded gains (section 2b). The 7 s row, "
+    f"out of trend on its face, is right for its printed gains (section 3). \"Optimum\" "
+    f"cannot be checked, nor can the gains themselves be derived: the criterion is in a Bendix "
+    f"technical note we do not have.\n\n"
+    f"**Beyond the source** (section 4): all {len(damping)} gain sets are stable and "
+    f"{', '.join(sorted(set(damping['damping'])))} — β is {bb.min():.1f}–{bb.max():.1f} times "
+    f"the Benedict–Bordner β — with zero steady-state lag to a ramp and a lag of T²/β "
+    f"(predicted) or (1 − α)T²/β (smoothed) per unit acceleration."
+)
+
+# %% [markdown]
+# The scorecard of this document, the rows that are not a match, and the robustness sweep:
+# every row that depends on an input the document does not give (`depends_on`) was re-judged
+# at each plausible value of that input (one at a time, the others nominal).
 
 # %%
 display(scorecard([comparison]).set_index("doc"))
 display(Markdown("Rows that are not a match:"))
 display(non_matches(comparison))
+display(Markdown("Robustness sweep (`robustness.csv`): the verdict of each dependent row at "
+                 "each plausible value of its assumed input."))
+display(robustness.pivot_table(index="key", columns="value", values="verdict", aggfunc="first"))
 
 # %% [markdown]
 # ## 1. The test program: impulse and ramp responses
 #
 # Input as the letter report writes it: impulse = one sample of 1/T at the first sampling
 # (`abglib.simulate.bendix_impulse`); ramp = 0 at the first sampling, raised by T each
-# sampling for 10 periods (reaching 10T), then held at zero (`bendix_ramp`); 40 samples.
-# Graph order as in the report: smoothed position X(K), smoothed velocity XD(KB), predicted
-# position XP(K) (the prediction for sample k made before sample k arrived). The y grid is
-# drawn every SFY, the captions' scale factor (0.10 for every impulse graph; 10.00 for the
-# ramp graphs, 1.00 at T = 1 s), so that a reader can hold the panels against the originals.
-# Solid with dots: the captions' two-digit gains; dashed: the memo's three-digit gains.
+# sampling "for 10 periods", then "held at zero" (`bendix_ramp`; we read the text literally:
+# the input drops back to zero). Graph order as in the report: smoothed position X(K),
+# smoothed velocity XD(KB), predicted position XP(K) (the prediction for sample k made before
+# sample k arrived). The y grid is drawn every SFY, the captions' scale factor, so that a
+# reader can hold the panels against the originals. Solid with dots: the captions' two-digit
+# gains; dashed: the memo's three-digit gains.
 
 # %%
+display(verdicts("Purpose"))
+display(verdicts("Operation"))
 for name in ("impulse", "ramp"):
     display(Markdown(f"**{name} responses**"))
     display(Image(filename=figures[name]))
@@ -127,13 +188,38 @@ for name in ("impulse", "ramp"):
 # %% [markdown]
 # ### The gain tables and what their difference does
 #
-# The captions' gains are the memo's truncated (not rounded) to two digits: .066 → .06,
-# .175 → .17, .465 → .46, .565 → .56, .685 → .68, .855 → .85, .665 → .66. `maxdiff_*` is the
-# largest difference between the two runs over the 40 samples, `*_sfy` the same in SFY
-# divisions.
+# `maxdiff_*` is the largest difference between the two runs over the samples, `*_sfy` the
+# same in SFY divisions.
 
 # %%
+cut = []
+for n in ("alpha", "beta"):
+    c = captions[captions["input"] == "ramp"]
+    for r in c[c[f"{n}_memo_rounded"] != c[f"{n}_memo_truncated"]].itertuples():
+        cut.append(f"{fmt(getattr(r, f'{n}_memo'))} → {getattr(r, n):.2f}")
+show(
+    f"The captions' gains are the memo's truncated (not rounded) to two digits; {len(cut)} of "
+    f"them differ from rounding: {', '.join(cut)}."
+)
 display(gains.set_index("period_s").T)
+
+# %% [markdown]
+# ### 1b. The captions
+#
+# Each (input, period) has three captions that print the same ALPHA, BETA, T and SFY. The
+# T = 5 s ramp captions name PREDICTED POSITION twice and SMOOTHED VELOCITY not at all (a
+# damaged or misprinted caption; the numbers agree). Every caption gain is judged against
+# the memo's gain for its period (the letter report takes its gains from "an enclosed letter
+# from Bendix"), the caption's T against the period of the nearest memo gain set, and the
+# SFY against a reconstruction: the power of ten that fits the input's peak in
+# `plot_divisions` grid divisions (an assumed input with a plausible range, see the
+# robustness sweep above; the document gives neither the program's scaling rule nor the
+# graph's height).
+
+# %%
+display(captions)
+display(verdicts("Impulse response captions"))
+display(verdicts("Ramp response captions"))
 
 # %% [markdown]
 # ## 2. The memo's table
@@ -144,12 +230,14 @@ display(gains.set_index("period_s").T)
 #   k_v = \frac{2\beta^2}{\alpha(4 - 2\alpha - \beta)\,T^2},$$
 #
 # printed columns = √k_x and √k_v. Twins: the discrete Lyapunov solution
-# (`abglib.analysis.vrf`) and a Monte Carlo — unit white noise on a stationary target through
-# `abglib.track`, 500 runs × 20 000 samples per row after a 200-sample burn-in (the seed is in
-# the provenance table; each row uses seed + row index). The 95 % CI comes from the spread
-# of the per-run variances; `*_mc_z` is the standard score of the Monte Carlo variance
-# against the exact one. `velocity_per_sample` = √k_v·T, the per-sample reading of the
-# second column, which the printed numbers do not follow (except trivially at T = 1 s).
+# (`abglib.analysis.vrf`) and a Monte Carlo — unit white Gaussian noise on a stationary
+# target through `abglib.track`, after a burn-in (runs, samples and seed are in the
+# provenance table; each row uses seed + row index). The 95 % CI comes from the spread of the
+# per-run variances; `*_mc_z` is the standard score of the Monte Carlo variance against the
+# exact one. `velocity_per_sample` = √k_v·T, the per-sample reading of the second column. The
+# noise's distribution does not matter (a linear filter's output variance depends on the
+# input's second moments only); white, independent noise is what "standard deviation
+# reduction" of independent measurements means.
 
 # %%
 cols = ["period_s", "alpha", "beta", "position_published", "position_closed",
@@ -158,12 +246,13 @@ cols = ["period_s", "alpha", "beta", "position_published", "position_closed",
         "velocity_mc_lo", "velocity_mc_hi", "velocity_mc_z", "velocity_per_sample",
         "position_closed_captions", "velocity_closed_captions"]
 display(memo[cols])
-display(Markdown(
+show(
     f"Largest |closed form − Lyapunov|: "
     f"{(memo['position_closed'] - memo['position_lyapunov']).abs().max():.2e} (position), "
     f"{(memo['velocity_closed'] - memo['velocity_lyapunov']).abs().max():.2e} (velocity). "
-    f"Monte Carlo samples per row: {int(memo['mc_samples'].iloc[0]):,}."
-))
+    f"Monte Carlo samples per row: {mc_n:,}; largest |z| "
+    f"{memo[['position_mc_z', 'velocity_mc_z']].abs().to_numpy().max():.2f}."
+)
 display(verdicts("Memo table"))
 
 # %% [markdown]
@@ -172,10 +261,15 @@ display(verdicts("Memo table"))
 # The worked example ("for update rate of three seconds, the standard deviation in smoothed
 # angle is 0.69 × 1° = .69°. The standard deviation in angle rate is 0.125 × 1° =
 # .125°/sec") names the first column the smoothed position and the second a rate per second.
-# All eight velocity entries agree with √k_v in 1/s; the per-sample √k_v·T (0.23 … 1.19)
-# agrees with none for T ≥ 2 s.
 
 # %%
+later = memo[memo["period_s"] > 1]
+show(
+    f"The per-sample √k_v·T runs from {later['velocity_per_sample'].min():.2f} to "
+    f"{later['velocity_per_sample'].max():.2f} for T ≥ 2 s, against printed values "
+    f"{fmt(later['velocity_published'].min())}–{fmt(later['velocity_published'].max())}; "
+    f"√k_v in 1/s agrees with every row."
+)
 display(verdicts("Memo example"))
 display(verdicts("Memo text"))
 
@@ -183,29 +277,55 @@ display(verdicts("Memo text"))
 # ### 2b. Rounding of the gains
 #
 # The memo prints the gains to three decimals. For every row, the range of each ratio over
-# all gain pairs that print as the memo's (α ± .0005, β ± .0005; Lyapunov, 101 × 101 grid),
-# and the pair inside that box that best reproduces *both* printed ratios together (worst
-# error in tolerances). Every printed ratio lies inside its range; for the 1 s row, where
-# the printed gains give 0.4916 against the printed .491, α = 0.2495, β = 0.0659 gives
-# 0.4914 and 0.1006 — both printed ratios within half a unit. The memo's ratios were
-# evidently computed from gains with more digits than it prints.
+# all gain pairs that print as the memo's (α ± .0005, β ± .0005; Lyapunov on a grid), and the
+# pair inside that box that best reproduces *both* printed ratios together (worst error in
+# tolerances). This is an alternative reading (`explained`), not an assumed input: the memo
+# prints its gains, and the ratios are judged at the printed values.
 
 # %%
+tol_ratio = float(ratio_rows["tolerance"].astype(float).max())  # half a unit, 3 decimals
+inside = reached = 0
+for k in ("position", "velocity"):
+    lo, hi, pub = rounding[f"{k}_min"], rounding[f"{k}_max"], memo[f"{k}_published"]
+    inside += int(((lo <= pub) & (pub <= hi)).sum())
+    reached += int(((lo <= pub + tol_ratio) & (pub - tol_ratio <= hi)).sum())
+show(
+    f"{reached} of the {2 * len(memo)} printed ratios are within half a unit of their range "
+    f"({inside} lie inside it as exact decimals); "
+    f"{int(rounding['both_reproduced'].sum())} of {len(rounding)} rows have a pair that "
+    f"reproduces both. For the 1 s row, where the printed gains give {p1['position_closed']:.4f} against the "
+    f"printed {fmt(p1['position_published'])}, α = {r1['best_alpha']:.4f}, β = "
+    f"{r1['best_beta']:.4f} gives {r1['best_position']:.4f} and {r1['best_velocity']:.4f} — "
+    f"both printed ratios within half a unit."
+)
 display(rounding)
 
 # %% [markdown]
 # ## 3. The 7 s row
 #
-# Out of trend on its face: 0.861/0.158 between 0.820/0.142 (6 s) and 0.872/0.149 (8 s).
-# Three hypotheses: (a) the ratios are right for the printed gains α = .645, β = .855;
-# (b) the gains are on trend and the ratios a slip — α and β interpolated by a cubic in T
-# through the other seven periods give β ≈ 0.806, whose ratios would be 0.849/0.147;
-# (c) the velocity column was computed for another T (6 s: 0.184; 8 s: 0.138). Only (a)
-# reproduces both printed numbers. The kink is in β = .855 (β/β_BB = 2.78 against 2.46 and
-# 2.75 on either side, damping ratio ζ = 0.414 below both neighbours), and the plot
-# captions (BETA = 0.85 at T = 7 s) show it is the β that was actually run.
+# Three hypotheses for a row that looks out of trend: (a) the ratios are right for the
+# printed gains; (b) the gains are on trend and the ratios a slip — α and β interpolated by a
+# cubic in T through the other seven periods; (c) the velocity column was computed for
+# another T.
 
 # %%
+h = row7.set_index("hypothesis")
+trend = h.loc[h.index.str.startswith("on-trend")].iloc[0]
+v6 = h.loc[h.index.str.contains("T = 6 s"), "velocity"].iloc[0]
+v8 = h.loc[h.index.str.contains("T = 8 s"), "velocity"].iloc[0]
+show(
+    f"Printed: {fmt(memo_p.loc[7, 'position_published'])}/{fmt(memo_p.loc[7, 'velocity_published'])} "
+    f"between {fmt(memo_p.loc[6, 'position_published'])}/{fmt(memo_p.loc[6, 'velocity_published'])} "
+    f"(6 s) and {fmt(memo_p.loc[8, 'position_published'])}/{fmt(memo_p.loc[8, 'velocity_published'])} "
+    f"(8 s). (a) gives {memo_p.loc[7, 'position_closed']:.3f}/{memo_p.loc[7, 'velocity_closed']:.3f}; "
+    f"(b) gives β ≈ {trend['beta']:.3f}, whose ratios would be {trend['position']:.3f}/"
+    f"{trend['velocity']:.3f}; (c) gives {v6:.3f} (6 s) or {v8:.3f} (8 s). Only (a) reproduces "
+    f"both printed numbers. The kink is in β = {fmt(damp.loc[7, 'beta'])} itself (β/β_BB = "
+    f"{damp.loc[7, 'beta_over_benedict']:.2f} against {damp.loc[6, 'beta_over_benedict']:.2f} "
+    f"and {damp.loc[8, 'beta_over_benedict']:.2f} on either side; damping ratio ζ = "
+    f"{damp.loc[7, 'zeta']:.3f} below both neighbours), and the captions (BETA = "
+    f"{memo_p.loc[7, 'beta_captions']:.2f} at T = 7 s) show it is the β that was run."
+)
 display(row7)
 
 # %% [markdown]
@@ -222,9 +342,8 @@ display(row7)
 # steady-state lag; to a constant acceleration A the predicted position lags by A T²/β and
 # the smoothed position by (1 − α) A T²/β. The table gives the lags per unit acceleration
 # (in m per m/s², i.e. s²) and, as a numeric twin, the error after tracking a ramp and a
-# parabola for 2000 samples with `abglib.track`. (The letter report's "ramp" is a finite
-# 10-period ramp followed by a drop to zero, so its graphs show transients, not these
-# steady states.)
+# parabola with `abglib.track`. (The letter report's "ramp" is a finite ramp followed by a
+# drop to zero, so its graphs show transients, not these steady states.)
 
 # %%
 display(Image(filename=figures["triangle"]))
@@ -234,6 +353,8 @@ display(damping)
 # ## 5. Every published number and claim
 #
 # `comparison.csv` (beside this report): tolerance is half a unit in the last printed digit.
+# `depends_on` names the assumed inputs a row depends on; `robust` says whether its verdict
+# holds across their plausible ranges.
 
 # %%
 display(comparison)

@@ -73,6 +73,8 @@ REPORT_CONTENT = {
             "row7",
             "damping_lags",
             "responses",
+            "captions",
+            "robustness",
         ],
     },
     "huang": {

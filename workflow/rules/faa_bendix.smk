@@ -2,53 +2,22 @@
 # A. I. Sinsky's memo on the expected smoothing. Impulse and ramp responses of the eight
 # gain sets, the memo's table, damping and lags.
 
+from abglib.replications.faa_bendix import study as faa_bendix_study
+
 FB = config.get("faa_bendix", {})
 if "faa_bendix" in DOCS and not FB:
     raise WorkflowError("config lists faa_bendix in docs but has no faa_bendix section")
 
 
+# the study's report tables (abglib.replications.faa_bendix.study.TABLES)
+FAA_BENDIX_TABLES = list(faa_bendix_study.TABLES)
+
+
 rule faa_bendix_reproduce:
     input:
-        published=sorted(str(f) for f in (PUBLISHED / "faa_bendix").glob("*.csv")),
+        published=published_tables_of("faa_bendix"),
     output:
-        reproduced="results/faa_bendix/reproduced.csv",
-        alternatives="results/faa_bendix/alternatives.csv",
-        responses=report(
-            "results/faa_bendix/responses.csv",
-            category="FAA Bendix",
-            subcategory="Tables",
-            labels={"table": "responses"},
-        ),
-        gains=report(
-            "results/faa_bendix/gains.csv",
-            category="FAA Bendix",
-            subcategory="Tables",
-            labels={"table": "gains"},
-        ),
-        memo_table=report(
-            "results/faa_bendix/memo_table.csv",
-            category="FAA Bendix",
-            subcategory="Tables",
-            labels={"table": "memo table"},
-        ),
-        rounding=report(
-            "results/faa_bendix/rounding.csv",
-            category="FAA Bendix",
-            subcategory="Tables",
-            labels={"table": "rounding"},
-        ),
-        row7=report(
-            "results/faa_bendix/row7.csv",
-            category="FAA Bendix",
-            subcategory="Tables",
-            labels={"table": "row 7"},
-        ),
-        damping_lags=report(
-            "results/faa_bendix/damping_lags.csv",
-            category="FAA Bendix",
-            subcategory="Tables",
-            labels={"table": "damping and lags"},
-        ),
+        **reproduce_outputs("faa_bendix", FAA_BENDIX_TABLES),
     log:
         "logs/faa_bendix/reproduce.log",
     benchmark:
@@ -57,16 +26,22 @@ rule faa_bendix_reproduce:
         "../envs/abglib.yaml"
     params:
         library=LIBRARY_HASH,
-        cfg=FB,
+        doc="faa_bendix",
+        cfg=doc_config("faa_bendix"),
+        overrides=config["tolerance_overrides"].get("faa_bendix", {}),
         digits=config["significant_digits"],
     script:
-        "../scripts/faa_bendix.py"
+        "../scripts/reproduce.py"
+
+
+ruleorder: faa_bendix_reproduce > comparison
 
 
 rule faa_bendix_figures:
     input:
         responses="results/faa_bendix/responses.csv",
         damping_lags="results/faa_bendix/damping_lags.csv",
+        captions="results/faa_bendix/captions.csv",
     output:
         impulse=report(
             "results/faa_bendix/figures/impulse.png",

@@ -1,4 +1,4 @@
-"""Draw the FAA Bendix report's figures (seed 003) from the tables of faa_bendix.py."""
+"""Draw the FAA Bendix report's figures (seed 003) from the tables of its reproduce rule."""
 
 import pandas as pd
 
@@ -6,22 +6,16 @@ from abglib.reporting.pipeline import log_to
 
 
 def main(input, output, params) -> None:
-    from abglib.replications.faa_bendix import program as bendix
-    from abglib.replications.faa_bendix.figures import response_grid, stability_triangle
+    from abglib.replications.faa_bendix.figures import draw_all
     from abglib.reporting.plotting import save_figure
 
-    resp = pd.read_csv(input.responses)
-    for kind in bendix.INPUTS:
-        title = (
-            f"{kind.upper()} RESPONSE OF THE BENDIX ALPHA-BETA FILTER, T = 1-8 s "
-            "(y grid every SFY, the captions' scale factor)"
-        )
-        fig = response_grid(resp, kind, bendix.SFY[kind], title)
-        save_figure(fig, getattr(output, kind), dpi=params.dpi)
-    fig = stability_triangle(
-        pd.read_csv(input.damping_lags), "The eight Bendix gain sets (memo) in the α-β plane"
+    figs = draw_all(
+        pd.read_csv(input.responses),
+        pd.read_csv(input.damping_lags),
+        pd.read_csv(input.captions),
     )
-    save_figure(fig, output.triangle, dpi=params.dpi)
+    for name, fig in figs.items():
+        save_figure(fig, getattr(output, name), dpi=params.dpi)
 
 
 if "snakemake" in globals():

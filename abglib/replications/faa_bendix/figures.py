@@ -7,7 +7,7 @@ import pandas as pd
 
 from ...reporting.plotting import _STYLE, plt
 
-__all__ = ['response_grid', 'stability_triangle']
+__all__ = ["draw_all", "response_grid", "stability_triangle"]
 
 
 _BENDIX_LABELS = {
@@ -152,3 +152,21 @@ def stability_triangle(table: pd.DataFrame, title: str = ""):
         if title:
             fig.suptitle(title, fontsize=9)
     return fig
+
+
+def draw_all(responses: pd.DataFrame, damping_lags: pd.DataFrame, captions: pd.DataFrame) -> dict:
+    """The report's three figures, by output name: ``impulse``, ``ramp`` (response grids
+    with the captions' SFY, from ``captions.csv``) and ``triangle``."""
+    figs = {}
+    for kind in ("impulse", "ramp"):
+        c = captions[captions["input"] == kind]
+        sfy = dict(zip(c["period_s"], c["sfy"], strict=True))
+        title = (
+            f"{kind.upper()} RESPONSE OF THE BENDIX ALPHA-BETA FILTER, "
+            f"T = {min(sfy)}-{max(sfy)} s (y grid every SFY, the captions' scale factor)"
+        )
+        figs[kind] = response_grid(responses, kind, sfy, title)
+    figs["triangle"] = stability_triangle(
+        damping_lags, "The eight Bendix gain sets (memo) in the α-β plane"
+    )
+    return figs

@@ -12,6 +12,7 @@ gain sets). This module holds the science specific to them; everything general i
 ``memo_ratios``          the memo's two columns from the closed form (Benedict-Bordner)
 ``monte_carlo_ratios``   the same two ratios estimated by a seeded simulation, with a CI
 ``rounding_box``         the ratios attainable with gains inside their printed rounding
+``power_of_ten_scale``   a reconstruction of the captions' y scale factor SFY
 ``beta_critical``        critically damped beta for an alpha (seed 001, eq 20)
 ``beta_benedict``        Benedict-Bordner beta for an alpha
 ``damping``              damping class, pole radius and equivalent damping ratio
@@ -32,8 +33,6 @@ from ...simulate import bendix_impulse, bendix_ramp, rng_from
 __all__ = [
     "GRAPHS",
     "INPUTS",
-    "PERIODS",
-    "SFY",
     "beta_benedict",
     "beta_critical",
     "damping",
@@ -42,12 +41,12 @@ __all__ = [
     "monte_carlo_ratios",
     "responses",
     "rounding_box",
+    "power_of_ten_scale",
     "run_test_program",
-    "sfy",
+    "simulated_lags",
+    "program_input",
 ]
 
-#: Update periods (s) of the memo table and of the plotted runs (seed 003).
-PERIODS = tuple(range(1, 9))
 #: The program's two test inputs, in graph order (seed 003, "The graphs will appear ...").
 INPUTS = ("impulse", "ramp")
 #: The three outputs graphed per input, in graph order, with the captions' labels.
@@ -56,21 +55,29 @@ GRAPHS = {
     "v_smooth": "SMOOTHED VELOCITY XD(KB)",
     "x_pred": "PREDICTED POSITION XP(K)",
 }
-#: Scale factor SFY printed in the captions: 0.10 for every impulse graph; 10.00 for the
-#: ramp graphs except 1.00 at T = 1 s (seed 003, captions).
-SFY = {
-    "impulse": {p: 0.10 for p in PERIODS},
-    "ramp": {p: (1.00 if p == 1 else 10.00) for p in PERIODS},
-}
 
 
-def sfy(kind: str, period_s: int) -> float:
-    """Scale factor SFY of the caption of a graph (seed 003)."""
-    if kind not in SFY:
-        raise AbglibValueError(f"kind must be one of {list(SFY)}, got {kind!r}")
-    if period_s not in SFY[kind]:
-        raise AbglibValueError(f"period_s must be one of {list(PERIODS)}, got {period_s!r}")
-    return SFY[kind][period_s]
+def program_input(kind: str, n: int, T: float, rise_samples: int) -> np.ndarray:
+    """The program's impulse or ramp input (:func:`abglib.simulate.bendix_impulse`,
+    :func:`abglib.simulate.bendix_ramp`), ``n`` samples at period ``T``."""
+    if kind == "impulse":
+        return bendix_impulse(n, T)
+    if kind == "ramp":
+        return bendix_ramp(n, T, rise_samples)
+    raise AbglibValueError(f"kind must be one of {list(INPUTS)}, got {kind!r}")
+
+
+def power_of_ten_scale(peak: float, divisions: float) -> float:
+    """The smallest power of ten ``s`` with ``divisions * s >= peak``.
+
+    A reconstruction of how the program could choose a graph's y scale factor SFY: every
+    printed SFY (0.10, 1.00, 10.00; seed 003 captions) is a power of ten; the program's
+    rule and the plot's height in grid divisions are not printed.
+    """
+    peak = float(check_positive("peak", peak))
+    divisions = float(check_positive("divisions", divisions))
+    e = int(np.ceil(np.log10(peak / divisions) - 1e-12))
+    return float(10.0**e)
 
 
 # --------------------------------------------------------------------------- the program
@@ -119,7 +126,9 @@ def run_test_program(z, alpha: float, beta: float, T: float) -> dict:
     return {"x_smooth": xb, "v_smooth": xd, "x_pred": xp}
 
 
-def responses(gains: Gains, T: float, n: int = 40, rise_samples: int = 10) -> pd.DataFrame:
+def responses(
+    gains: Gains, T: float, n: int = 40, rise_samples: int = 10, kinds=INPUTS
+) -> pd.DataFrame:
     """Impulse and ramp responses of one gain set, as the test program computes them.
 
     Parameters
@@ -132,6 +141,8 @@ def responses(gains: Gains, T: float, n: int = 40, rise_samples: int = 10) -> pd
         Number of samples ("40 intervals").
     rise_samples : int, default 10
         Samples over which the ramp rises ("for 10 periods").
+    kinds : sequence of {'impulse', 'ramp'}, default both
+        The test inputs to run.
 
     Returns
     -------
@@ -140,8 +151,8 @@ def responses(gains: Gains, T: float, n: int = 40, rise_samples: int = 10) -> pd
         :func:`abglib.track` with ``init="zero"`` (the program's implied initial state).
     """
     frames = []
-    for kind in INPUTS:
-        z = bendix_impulse(n, T) if kind == "impulse" else bendix_ramp(n, T, rise_samples)
+    for kind in kinds:
+        z = program_input(kind, n, T, rise_samples)
         r = track(z, gains, dt=T, init="zero")
         frames.append(
             pd.DataFrame(
