@@ -288,7 +288,8 @@ def _eq49(s: SteelmanStudy) -> Result:
     r = _stab(s, "45,46,48,49")
     return Result(
         bool(r["criterion_true_but_unstable"] == 0),
-        f"{_n(r)}, {int(r['criterion_true_but_unstable'])} pass eq 49 but are unstable; see '{SEC_STAB}'",
+        f"{_n(r)}, {int(r['criterion_true_but_unstable'])} pass eq 49 but are unstable; "
+        f"see '{SEC_STAB}'",
     )
 
 
@@ -486,7 +487,8 @@ def _fading(s: SteelmanStudy, key: str) -> Result:
         worst <= 1e3 * s.cfg["equation_checks"]["exact_rtol"],
         f"impulse response of the standard tracker against the weights of the exponentially "
         f"weighted least-squares {'parabola' if order == 3 else 'line'} (θ of eqs 22-24 / p. 5): "
-        f"max difference {_f(worst, 3)} at α = {', '.join(f'{a:g}' for a in errs)}; see '{SEC_TEXT}'",
+        f"max difference {_f(worst, 3)} at α = {', '.join(f'{a:g}' for a in errs)}; "
+        f"see '{SEC_TEXT}'",
     )
 
 

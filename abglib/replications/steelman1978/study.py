@@ -228,6 +228,9 @@ class SteelmanStudy(Study):
         e6 = self.cfg["eq53_exponent_6db"]
         g = self.std(alpha)
         wmax, over = A.peak(g)
+        key = f"table3.exact.{alpha:g}"
+        printed = self.value(key) if key in set(self.published["key"]) else np.nan
+        at_printed = -self.magnitude_db(g, "x_smooth", printed) if np.isfinite(printed) else np.nan
         return {
             "alpha": float(alpha),
             "beta": g.beta,
@@ -235,6 +238,8 @@ class SteelmanStudy(Study):
             "wT_6dB_eq53": float(A.omega_3db_eq53(g, e6)),
             "wT_6dB_exact": float(A.omega_at_gain(g, 20 * e6)),
             "wT_half_exact": float(A.omega_at_gain(g, 20 * np.log10(0.5))),
+            "wT_6dB_printed_exact": printed,
+            "dB_down_at_printed_exact": float(at_printed),
             "overshoot_eq55": float(A.overshoot_eq55(g)),
             "overshoot_exact": float(over),
             "wTmax_eq54": float(A.omega_max_eq54(g)),
