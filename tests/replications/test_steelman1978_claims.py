@@ -733,6 +733,14 @@ def test_eq21_not_reproducible(s, comparison):
     assert comparison.loc["claim.eq21_minimizes", "verdict"] == "not_reproducible"
 
 
+@claim_test(DOC, "claim.qd_least_squares")
+def test_qd_least_squares_not_reproducible(s, comparison):
+    res = CLAIMS.compute(s, "claim.qd_least_squares")
+    assert res.value is None and "not stated" in res.note
+    assert f"{qd_alpha(21.0):.5f}" in res.note  # eq 28 at m = 21: 0.24582
+    assert comparison.loc["claim.qd_least_squares", "verdict"] == "not_reproducible"
+
+
 @claim_test(DOC, "claim.summary_useful")
 def test_summary_not_reproducible(s, comparison):
     res = CLAIMS.compute(s, "claim.summary_useful")

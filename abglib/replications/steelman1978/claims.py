@@ -492,6 +492,18 @@ def _fading(s: SteelmanStudy, key: str) -> Result:
     )
 
 
+@CLAIMS.claim("claim.qd_least_squares")
+def _qd_ls(s: SteelmanStudy) -> Result:
+    g = s.qd_t2
+    return Result(
+        None,
+        "the intercept and slope constraints are not stated (refs. 5-6, a WSMR report and a "
+        "draft, are not among the seeds), so the fit cannot be set up; eqs 28-30 are used as "
+        f"the definition (m = {s.cfg['table2']['qd_m']:g}: α = {g.alpha:.5f}, β = {g.beta:.5f}, "
+        f"γ = {g.gamma:.6f}); see '{SEC_GAINS}'",
+    )
+
+
 @CLAIMS.claim("claim.simpson_reduces_to_bb")
 def _simpson_bb(s: SteelmanStudy) -> Result:
     lim = s.simpson_limit
