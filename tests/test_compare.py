@@ -207,40 +207,6 @@ def test_read_published_keeps_printed_strings_and_checks(tmp_path):
         read_published([p])
 
 
-# ------------------------------------------------------------------ seed 000 wiring
-def _load_script(name):
-    import importlib.util
-    from pathlib import Path
-
-    path = Path(__file__).resolve().parents[1] / "workflow" / "scripts" / f"{name}.py"
-    spec = importlib.util.spec_from_file_location(f"_script_{name}", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def test_steelman_reproduces_every_published_key_and_alternatives_are_known():
-    from pathlib import Path
-
-    import yaml
-
-    repo = Path(__file__).resolve().parents[1]
-    cfg = yaml.safe_load((repo / "tests" / "data" / "config_small.yaml").read_text())
-    cfg = cfg["steelman1978"]
-    eqs = _load_script("steelman_equations")
-    rep = _load_script("steelman_reproduce")
-    ctx = rep.Context(cfg, eqs.stability_table(cfg["equation_checks"]))
-    published = read_published(sorted((repo / "data" / "published" / "steelman1978").glob("*.csv")))
-    values = rep.reproduced_values(ctx)
-    assert set(values) == set(published["key"])
-    alts = rep.alternatives_table(ctx)
-    assert set(alts["key"]) <= set(published["key"])
-    # every alternative cites a section heading that the report notebook has
-    notebook = (repo / "workflow" / "notebooks" / "steelman1978.py").read_text()
-    for section in set(alts["section"]):
-        assert f"## {section.replace('-', '–')}" in notebook or f"## {section}" in notebook
-
-
 def test_non_matches_keeps_only_rows_to_judge():
     from abglib.reporting.compare import non_matches
 

@@ -56,9 +56,11 @@ REPORT_CONTENT = {
         "figures": sorted(config["steelman1978"]["figures"]),
         "tables": [
             "comparison",
+            "robustness",
             "gains",
             "design_example",
             "tables345",
+            "approximations",
             "equations",
             "stability",
         ],

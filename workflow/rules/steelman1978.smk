@@ -1,5 +1,6 @@
 # Seed 000: J. E. Steelman, Frequency Response of α-β-γ Trackers (1978).
-# Figures 1-6, Tables 1-5, the design example, the equations' table of agreement.
+# Figures 1-6 (one response table and one figure each); Tables 1-5, the design example, the
+# equations' table of agreement and every claim (the study, one rule).
 
 S78 = config["steelman1978"]
 
@@ -51,59 +52,22 @@ rule steelman_figure:
         "../scripts/plot_frequency_response.py"
 
 
-rule steelman_equations:
-    output:
-        equations=report(
-            "results/steelman1978/equations.csv",
-            category="Steelman 1978",
-            subcategory="Tables",
-            labels={"table": "equations"},
-        ),
-        stability=report(
-            "results/steelman1978/stability.csv",
-            category="Steelman 1978",
-            subcategory="Tables",
-            labels={"table": "stability"},
-        ),
-    log:
-        "logs/steelman1978/equations.log",
-    benchmark:
-        "benchmarks/results/steelman1978/equations.tsv"
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        library=LIBRARY_HASH,
-        checks=S78["equation_checks"],
-        eq53_exponents=[S78["eq53_exponent_3db"], S78["eq53_exponent_6db"]],
-        digits=config["significant_digits"],
-    script:
-        "../scripts/steelman_equations.py"
+# every table of the study (abglib.replications.steelman1978) and the judged claims
+STEELMAN1978_TABLES = [
+    "gains",
+    "design_example",
+    "tables345",
+    "approximations",
+    "equations",
+    "stability",
+]
 
 
-rule steelman_reproduce:
+rule steelman1978_reproduce:
     input:
-        stability="results/steelman1978/stability.csv",
+        published=published_tables_of("steelman1978"),
     output:
-        reproduced="results/steelman1978/reproduced.csv",
-        alternatives="results/steelman1978/alternatives.csv",
-        gains=report(
-            "results/steelman1978/gains.csv",
-            category="Steelman 1978",
-            subcategory="Tables",
-            labels={"table": "gains"},
-        ),
-        design_example=report(
-            "results/steelman1978/design_example.csv",
-            category="Steelman 1978",
-            subcategory="Tables",
-            labels={"table": "design example"},
-        ),
-        tables345=report(
-            "results/steelman1978/tables345.csv",
-            category="Steelman 1978",
-            subcategory="Tables",
-            labels={"table": "tables 3-5"},
-        ),
+        **reproduce_outputs("steelman1978", STEELMAN1978_TABLES),
     log:
         "logs/steelman1978/reproduce.log",
     benchmark:
@@ -112,10 +76,15 @@ rule steelman_reproduce:
         "../envs/abglib.yaml"
     params:
         library=LIBRARY_HASH,
-        cfg=S78,
+        doc="steelman1978",
+        cfg=doc_config("steelman1978"),
+        overrides=config["tolerance_overrides"].get("steelman1978", {}),
         digits=config["significant_digits"],
     script:
-        "../scripts/steelman_reproduce.py"
+        "../scripts/reproduce.py"
+
+
+ruleorder: steelman1978_reproduce > comparison
 
 
 rule steelman_report:

@@ -6,10 +6,10 @@ from abglib.reporting.pipeline import log_to
 
 
 def main(input, output, params) -> None:
-    from abglib.reporting.plotting import frequency_response_figure, save_figure
+    from abglib.replications.steelman1978.figures import draw
+    from abglib.reporting.plotting import save_figure
 
-    data = pd.read_csv(input.data)
-    fig = frequency_response_figure(data, params.axes, params.caption)
+    fig = draw(pd.read_csv(input.data), params.axes, params.caption)
     save_figure(fig, output.png, dpi=params.dpi)
 
 

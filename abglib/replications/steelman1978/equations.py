@@ -1,31 +1,71 @@
-"""Table of agreement: every numbered equation of seed 000 that makes a numeric claim.
+"""Table of agreement: every numbered equation of seed 000 that makes a checkable claim.
 
-Each printed closed form (eqs 11-32, 36-39, 41, 45-59) is evaluated *as printed* (the
-``*_simpson``, ``*_standard_*``, ``*_eq5x`` functions of :mod:`abglib.analysis`) and
-compared with the exact route (Lyapunov variance, direct summation of the transient,
-characteristic polynomial, exact frequency-domain features, the DFT of the impulse
-response of :func:`abglib.track`). Where the printed form disagrees with the quantity the
-text names but equals another exact quantity, the row says which (``matches``).
+Each printed closed form (eqs 11-41, 50-59) is evaluated *as printed* (the ``*_simpson``,
+``*_standard_*``, ``*_eq5x`` functions of :mod:`abglib.analysis`, or the printed
+polynomial written out here) and compared with an exact route: the Lyapunov variance,
+direct summation of the transient, the eigenvalues of the closed-loop matrix
+(:func:`abglib.analysis.state_space`), exact frequency-domain features, the DFT of the
+impulse response of :func:`abglib.track`. Where a printed form disagrees with the quantity
+the text names but equals another exact quantity, the row says which (``matches``).
 
-The stability criteria (eqs 42-49) are checked on random gain sets (seeded) against
-:func:`abglib.analysis.is_stable` (the poles).
+The stability criteria (eqs 42-49) are checked on random gain sets (seeded) against the
+poles (:func:`abglib.analysis.is_stable`).
+
+``equation_table``   one row per (equation, gain set)
+``stability_table``  one row per criterion or implication of eqs 42-49
 """
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 import pandas as pd
 
-import abglib
-from abglib import analysis as A
-from abglib import design
-from abglib.reporting.pipeline import log_to
+from ... import analysis as A
+from ... import design
+from ...analysis._statespace import state_space
+from ...engine import track
+from ...gains import Gains
 
-# the quantity each printed variance/transient form names, and the exact outputs it may
-# equal instead (smoothed is what seed 000 defines: "steady-state variance in position
-# output"; Morrison's fading-memory forms may be one-step predictions)
+__all__ = [
+    "EQUATION_COLUMNS",
+    "STABILITY_COLUMNS",
+    "equation_table",
+    "impulse_length",
+    "stability_table",
+]
+
+EQUATION_COLUMNS = [
+    "equation",
+    "quantity",
+    "case",
+    "printed_form",
+    "exact_route",
+    "rel_diff",
+    "claimed",
+    "holds",
+    "matches",
+    "comment",
+]
+STABILITY_COLUMNS = [
+    "equations",
+    "check",
+    "samples",
+    "stable_by_poles",
+    "criterion_true",
+    "agree",
+    "criterion_true_but_unstable",
+    "criterion_false_but_stable",
+]
+
+# the quantity each printed variance form names (smoothed: seed 000 defines k_x(0) as the
+# "steady-state variance in position output" beside Simpson's eqs 11-13), and the exact
+# outputs it may equal instead (Morrison's fading-memory forms may be one-step predictions)
 _VRF_EXACT = {"x": ("x_smooth", "x_pred"), "v": ("v_smooth", "v_pred"), "a": ("a_smooth", "a_pred")}
 
 
-def _cases(alphas):
+def _cases(alphas: Sequence[float]):
     """Gain sets where every closed form is evaluated: standard α-β-γ / α-β, QD."""
     cases = []
     for a in alphas:
@@ -54,7 +94,7 @@ def _row(eq, quantity, case, printed, exact, claimed, rtol, matches="", comment=
     }
 
 
-def _match(value, candidates: dict, rtol) -> str:
+def _match(value, candidates: Mapping, rtol) -> str:
     """Names of the exact quantities that ``value`` equals within ``rtol``."""
     return ", ".join(
         k for k, v in candidates.items() if np.isfinite(v) and abs(value - v) <= rtol * abs(v)
@@ -65,7 +105,7 @@ def _morrison_rows(printed, eqs, exact_vrf, case, rtol):
     """Rows for Morrison's k_x, k_v(, k_a) (eqs 25-27 or 31-32) against every exact VRF."""
     rows = []
     for eq, key in zip(eqs, ("x", "v", "a"), strict=False):
-        cands = {k: exact_vrf[k] for k in _VRF_EXACT[key]}
+        cands = {k: exact_vrf[k] for k in _VRF_EXACT[key] if k in exact_vrf}
         rows.append(
             _row(
                 eq,
@@ -81,11 +121,20 @@ def _morrison_rows(printed, eqs, exact_vrf, case, rtol):
     return rows
 
 
-def _impulse_dft_error(gains, output, n):
-    """max |H(e^{jwT}) - DFT(impulse response of track())| over the DFT bins (eqs 36-39)."""
+def impulse_length(gains: Gains, n_min: int) -> int:
+    """Samples after which the impulse response has decayed below 1e-17 of its start (the
+    slowest pole), and at least ``n_min``: a power of two, so that the DFT of the truncated
+    response is the transfer function to rounding."""
+    radius = float(A.pole_radius(gains))
+    need = int(np.ceil(np.log(1e-17) / np.log(radius))) if 0 < radius < 1 else n_min
+    return int(2 ** np.ceil(np.log2(max(need, n_min))))
+
+
+def _impulse_dft_error(gains: Gains, output: str, n: int) -> float:
+    """max |H(e^{jωT}) - DFT(impulse response of track())| over the DFT bins (eqs 36-39)."""
     z = np.zeros(n)
     z[0] = 1.0
-    res = abglib.track(z, gains)
+    res = track(z, gains)
     h = {
         "x_smooth": res.x_smooth,
         "x_pred": res.x_pred,
@@ -93,15 +142,47 @@ def _impulse_dft_error(gains, output, n):
         "a_smooth": res.a_smooth,
     }[output]
     wt = 2.0 * np.pi * np.arange(n // 2 + 1) / n
-    dft = np.fft.rfft(h)
     tf = np.asarray(A.frequency_response(gains, output, wt))
-    return float(np.max(np.abs(dft - tf)))
+    return float(np.max(np.abs(np.fft.rfft(h) - tf)))
 
 
-def equation_table(cfg: dict, eq53_exponents) -> pd.DataFrame:
+def _eq33_35_residual(gains: Gains, n: int = 64) -> float:
+    """max residual of the Z-transformed eqs 33-35 (T = 1) with X̄, V̄, Ā of eqs 36-38,
+    on ``n`` points of the unit circle (the responses come from the state-space route)."""
+    a, b, g = (float(v) for v in gains)
+    wt = np.linspace(0.05, np.pi, n)
+    z = np.exp(1j * wt)
+    x, v, acc = (
+        np.asarray(A.frequency_response(gains, o, wt)) for o in ("x_smooth", "v_smooth", "a_smooth")
+    )
+    r33 = (z + a - 1) * x + (a - 1) * v + (a - 1) / 2 * acc - a * z
+    r34 = b * x + (z + b - 1) * v + (b / 2 - 1) * acc - b * z
+    r35 = g * x + g * v + (z + g / 2 - 1) * acc - g * z
+    return float(np.max(np.abs(np.concatenate([r33, r34, r35]))))
+
+
+def _printed_delta(gains: Gains) -> np.ndarray:
+    """Eq 40 as printed, expanded: (Z-1)^3 + α(Z-1)^2 + (β+γ/2)Z(Z-1) + γZ (descending)."""
+    a, b, g = (float(v) for v in gains)
+    w = np.poly1d([1.0, -1.0])
+    z = np.poly1d([1.0, 0.0])
+    return (w**3 + a * w**2 + (b + g / 2) * z * w + g * z).coeffs
+
+
+def _poles_poly(gains: Gains, reduced: bool) -> np.ndarray:
+    """Characteristic polynomial from the eigenvalues of the closed-loop matrix F."""
+    return np.real(np.poly(np.linalg.eigvals(state_space(gains, reduced=reduced).F)))
+
+
+def equation_table(cfg: Mapping, eq53_exponents: Sequence[float]) -> pd.DataFrame:
     """Rows of the table of agreement for the gain sets of ``cfg['alphas']``.
 
-    ``eq53_exponents``: the exponents of eq 53 to check (-.15 printed, -.3 for Table 3).
+    Parameters
+    ----------
+    cfg : mapping
+        ``steelman1978.equation_checks`` (``alphas``, ``exact_rtol``, ``impulse_samples``).
+    eq53_exponents : sequence of float
+        Exponents of eq 53 to check (-.15 printed for -3 dB, -.3 for Table 3's -6 dB).
     """
     rtol = float(cfg["exact_rtol"])
     n_impulse = int(cfg["impulse_samples"])
@@ -114,8 +195,8 @@ def equation_table(cfg: dict, eq53_exponents) -> pd.DataFrame:
                 cands = {k: exact_vrf[k] for k in _VRF_EXACT[key]}
                 rows.append(
                     _row(
-                        f"{eq} (with 14)",
-                        f"k_{key}(0), Simpson",
+                        eq,
+                        f"k_{key}(0), Simpson (with eq 14)",
                         case,
                         printed[key],
                         exact_vrf[_VRF_EXACT[key][0]],
@@ -124,35 +205,33 @@ def equation_table(cfg: dict, eq53_exponents) -> pd.DataFrame:
                         _match(printed[key], cands, rtol),
                     )
                 )
-            for eqs, fn_p, fn_e, name in (
-                ("15-17", A.transient_d2_simpson, A.transient_d2, "D²"),
-                ("18-20", A.transient_a2_simpson, A.transient_a2, "A²"),
+            for first, fn_p, fn_e, name in (
+                (15, A.transient_d2_simpson, A.transient_d2, "D²"),
+                (18, A.transient_a2_simpson, A.transient_a2, "A²"),
             ):
                 p, e = fn_p(g), fn_e(g)
                 for i, key in enumerate(("x", "v", "a")):
-                    eq = str(int(eqs[:2]) + i)
                     rows.append(
                         _row(
-                            eq,
+                            str(first + i),
                             f"{name}_{key}, Simpson",
                             case,
                             p[key],
                             e[key],
                             "exact",
                             rtol,
-                            _match(p[key], {k: e[k] for k in e}, rtol),
+                            _match(p[key], e, rtol),
                         )
                     )
         if kind == "abg":
             theta = design.standard_theta_from_alpha(g.alpha, 3)
-            cp = A.characteristic_polynomial(g)
-            triple = np.poly([theta] * 3)
+            cp = _poles_poly(g, reduced=False)
             rows.append(
                 _row(
                     "22-24",
                     "max |char. poly - (z-θ)³| (critically damped)",
                     case,
-                    float(np.max(np.abs(cp - triple))),
+                    float(np.max(np.abs(cp - np.poly([theta] * 3)))),
                     0.0,
                     "exact",
                     rtol,
@@ -166,13 +245,37 @@ def equation_table(cfg: dict, eq53_exponents) -> pd.DataFrame:
             theta = design.standard_theta_from_alpha(g.alpha, 2)
             rows += _morrison_rows(A.vrf_standard_ab(theta), ("31", "32"), exact_vrf, case, rtol)
             a, b = g.alpha, g.beta
-            cp = A.characteristic_polynomial(g)[1:]
+            printed41 = np.array([1.0, a + b - 2.0, 1.0 - a])
             rows.append(
                 _row(
                     "41",
-                    "max |char. poly - printed Δ|",
+                    "max |eigenvalue char. poly - printed Δ| (α-β)",
                     case,
-                    float(np.max(np.abs(cp - np.array([1.0, a + b - 2.0, 1.0 - a])))),
+                    float(np.max(np.abs(_poles_poly(g, reduced=True) - printed41))),
+                    0.0,
+                    "exact",
+                    rtol,
+                )
+            )
+        else:
+            rows.append(
+                _row(
+                    "33-35",
+                    "max residual of eqs 33-35 with the exact X̄, TV̄, T²Ā",
+                    case,
+                    _eq33_35_residual(g),
+                    0.0,
+                    "exact",
+                    rtol,
+                    comment="64 points of the unit circle",
+                )
+            )
+            rows.append(
+                _row(
+                    "40",
+                    "max |eigenvalue char. poly - printed Δ|",
+                    case,
+                    float(np.max(np.abs(_poles_poly(g, reduced=False) - _printed_delta(g)))),
                     0.0,
                     "exact",
                     rtol,
@@ -187,21 +290,22 @@ def equation_table(cfg: dict, eq53_exponents) -> pd.DataFrame:
         ):
             if kind == "ab" and out == "a_smooth":
                 continue
-            err = _impulse_dft_error(g, out, n_impulse)
+            n = impulse_length(g, n_impulse)
             rows.append(
                 _row(
                     eq,
                     f"max |H - DFT(track impulse)|, {out}",
                     case,
-                    err,
+                    _impulse_dft_error(g, out, n),
                     0.0,
                     "exact",
                     rtol,
-                    comment=f"{n_impulse}-point DFT",
+                    comment=f"{n}-point DFT",
                 )
             )
         # frequency-domain features (eqs 50-59)
         wmax, over = A.peak(g)
+        unity = A.omega_at_gain(g, 0.0)
         rows.append(
             _row(
                 "50",
@@ -214,15 +318,7 @@ def equation_table(cfg: dict, eq53_exponents) -> pd.DataFrame:
             )
         )
         rows.append(
-            _row(
-                "51",
-                "ωT where |X̄/X| = 1",
-                case,
-                A.omega_unity_eq51(g),
-                A.omega_at_gain(g, 0.0),
-                "exact",
-                rtol,
-            )
+            _row("51", "ωT where |X̄/X| = 1", case, A.omega_unity_eq51(g), unity, "exact", rtol)
         )
         rows.append(
             _row(
@@ -230,7 +326,7 @@ def equation_table(cfg: dict, eq53_exponents) -> pd.DataFrame:
                 "ωT where |X̄/X| = 1",
                 case,
                 A.omega_unity_eq52(g),
-                A.omega_at_gain(g, 0.0),
+                unity,
                 "approximation",
                 rtol,
             )
@@ -252,14 +348,16 @@ def equation_table(cfg: dict, eq53_exponents) -> pd.DataFrame:
         rows.append(
             _row("55-59", "overshoot", case, A.overshoot_eq55(g), over, "approximation", rtol)
         )
-    return pd.DataFrame(rows)
+    return pd.DataFrame(rows, columns=EQUATION_COLUMNS)
 
 
-def stability_table(cfg: dict) -> pd.DataFrame:
+def stability_table(cfg: Mapping) -> pd.DataFrame:
     """Agreement of the printed stability criteria (eqs 42-49) with the poles.
 
     Gains are drawn uniformly from ``cfg['stability_box']`` with ``cfg['stability_seed']``;
-    α-β sets (γ = 0) for eqs 42-44, α-β-γ sets for the rest.
+    α-β sets (γ = 0) for eqs 42-44, α-β-γ sets for the rest. Besides the criteria, the
+    statements after eq 48: the implications, and that γ = 0 reduces the α-β-γ
+    conditions (45-47) to the α-β ones (42-44).
     """
     rng = np.random.default_rng(int(cfg["stability_seed"]))
     n = int(cfg["stability_samples"])
@@ -267,7 +365,7 @@ def stability_table(cfg: dict) -> pd.DataFrame:
     a = rng.uniform(*box["alpha"], n)
     b = rng.uniform(*box["beta"], n)
     c = rng.uniform(*box["gamma"], n)
-    g3, g2 = abglib.Gains(a, b, c), abglib.Gains(a, b)
+    g3, g2 = Gains(a, b, c), Gains(a, b)
     s3, s2 = np.asarray(A.is_stable(g3)), np.asarray(A.is_stable(g2))
     eq45 = (a > 0) & (a < 2)
     checks = [
@@ -294,9 +392,9 @@ def stability_table(cfg: dict) -> pd.DataFrame:
                 "criterion_false_but_stable": int((~crit & truth).sum()),
             }
         )
-    # implications stated in the text after eq 48
+    ab = (a > 0) & (b > 0) & (2 * a + b < 4)
     imp = [
-        ("42-44 ⇒ 45", "α>0, β>0, 2α+β<4 imply 0<α<2", (a > 0) & (b > 0) & (2 * a + b < 4), eq45),
+        ("42-44 ⇒ 45", "α>0, β>0, 2α+β<4 imply 0<α<2", ab, eq45),
         (
             "45,47,48 ⇒ 43",
             "0<α<2, αβ+αγ/2-γ>0, γ>0 imply β>0",
@@ -317,16 +415,18 @@ def stability_table(cfg: dict) -> pd.DataFrame:
                 "criterion_false_but_stable": 0,
             }
         )
-    return pd.DataFrame(rows)
-
-
-def main(output, params) -> None:
-    from abglib.reporting.compare import write_csv
-
-    write_csv(equation_table(params.checks, params.eq53_exponents), output.equations, params.digits)
-    write_csv(stability_table(params.checks), output.stability, params.digits)
-
-
-if "snakemake" in globals():
-    log_to(snakemake.log[0])  # noqa: F821
-    main(snakemake.output, snakemake.params)  # noqa: F821
+    # γ = 0 in eqs 45-47 (eq 48, γ > 0, cannot hold at γ = 0 and is left out)
+    reduced = eq45 & (2 * a + b < 4) & (a * b > 0)
+    rows.append(
+        {
+            "equations": "45-47 at γ=0 ⇔ 42-44",
+            "check": "γ = 0 in eqs 45-47 gives eqs 42-44 (eq 48 left out)",
+            "samples": n,
+            "stable_by_poles": None,
+            "criterion_true": int(reduced.sum()),
+            "agree": int((reduced == ab).sum()),
+            "criterion_true_but_unstable": int((reduced & ~ab).sum()),
+            "criterion_false_but_stable": int((~reduced & ab).sum()),
+        }
+    )
+    return pd.DataFrame(rows, columns=STABILITY_COLUMNS)
