@@ -96,6 +96,8 @@ REPORT_CONTENT = {
             "consistency",
             "causal",
             "sensitivity",
+            "m5_bank",
+            "robustness",
         ],
     },
     "antenna": {
