@@ -22,6 +22,8 @@ ALWAGIH_TABLES = [
     "sensitivity",
     "m5_bank",
     "tracks",
+    "experiments",
+    "settings",
 ]
 
 

@@ -97,6 +97,8 @@ REPORT_CONTENT = {
             "causal",
             "sensitivity",
             "m5_bank",
+            "experiments",
+            "settings",
             "robustness",
         ],
     },

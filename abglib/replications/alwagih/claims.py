@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ... import methods
+from ...analysis import is_stable
 from ...gains import Gains
 from ...reporting.compare import format_number, parse_printed
 from .. import ClaimSet, Reading, Result
@@ -159,7 +161,8 @@ def _p_conclusion(s, key):
 @CLAIMS.family(r"claim\.printed\.ttest\.t[34]\.M[12]\.[XY]\.M[345]")
 def _p_ttest(s, key):
     _, _, _, table, base, coord, m = key.split(".")
-    return _ttest_result(s.printed_ttests, _noise(table), base, coord, m, "printed Table")
+    where = f"printed Table {int(table[1]) - 2}"
+    return _ttest_result(s.printed_ttests, _noise(table), base, coord, m, where)
 
 
 @CLAIMS.family(r"claim\.printed\.t[34]\.sign\.M[12]\.[XY]\.M[345]")
@@ -379,8 +382,6 @@ def _more_trackers(s, key):
 @CLAIMS.claim("claim.eq12_14")
 def _eq12_14(s):
     a, b = stability.random_gains(s.cfg["stability_seed"], s.cfg["stability_samples"])
-    from ...analysis import is_stable
-
     exact = np.asarray(is_stable(Gains(a, b)))
     printed = np.asarray(stability.stable_alwagih_eq12_14(a, b))
     return Result(
@@ -425,8 +426,6 @@ def _alpha_gt1(s):
 
 @CLAIMS.claim("claim.init_eq9_10")
 def _init(s):
-    from ... import methods
-
     rng = np.random.default_rng(int(s.cfg["stability_seed"]))
     z = rng.normal(0.0, 100.0, (8, 12))
     first = np.stack([methods.m1(z, a).x_pred[:, :3] for a in (0.01, 0.1, 0.5, 1.0)])
@@ -441,8 +440,6 @@ def _init(s):
 
 @CLAIMS.claim("claim.eq24_least_squares")
 def _eq24(s):
-    from ... import methods
-
     rng = np.random.default_rng(int(s.cfg["stability_seed"]) + 1)
     z = rng.normal(0.0, 100.0, 30)
     pred = methods.m2(z[None, :]).x_pred[0]

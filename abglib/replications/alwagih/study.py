@@ -476,6 +476,51 @@ class AlwagihStudy(Study):
                 frames.append(f)
         return pd.concat(frames, ignore_index=True)
 
+    def experiments(self) -> pd.DataFrame:
+        """The reconstructed experiments as used (after the reconstruction knobs): noise,
+        sampling and the largest acceleration per coordinate with how long it acts."""
+        rows = []
+        for noise, specs in self.scenarios.items():
+            for e, (name, spec) in enumerate(specs, start=1):
+                ds = _dataset(name, _key(spec))
+                row = {
+                    "noise": noise,
+                    "experiment": e,
+                    "scenario": name,
+                    "dt": ds.dt,
+                    "n_samples": ds.n_samples,
+                    "runs": ds.runs,
+                    "sigma": float(spec["noise"]["sigma"]),
+                    "rho": float(spec["noise"].get("rho", 0.0)),
+                }
+                for c in ("x", "y"):
+                    acc = np.asarray(ds.truth_acc[c][0], float)
+                    row[f"{c}_max_abs_acc"] = float(np.max(np.abs(acc)))
+                    row[f"{c}_accelerating_s"] = float(np.sum(np.abs(acc) > 1e-9) * ds.dt)
+                rows.append(row)
+        return pd.DataFrame(rows)
+
+    def settings(self) -> pd.DataFrame:
+        """The methods' settings (config ``alwagih``) as a name/value table for the report."""
+        c = self.cfg
+        items = {
+            "m1_alpha": c["m1_alpha"],
+            "m3_w_points": c["m3_w_grid"]["n"],
+            "m4_alpha0": c["m4"]["alpha0"],
+            "m4_window": c["m4"]["window"],
+            "m4_alpha_points": c["m4"]["alpha_grid"]["n"],
+            "m4_alpha_low": c["m4"]["alpha_grid"]["start"],
+            "m4_alpha_high": c["m4"]["alpha_grid"]["stop"],
+            "m5_K": c["m5"]["alphas"]["n"],
+            "m5_alpha_low": c["m5"]["alphas"]["start"],
+            "m5_alpha_high": c["m5"]["alphas"]["stop"],
+            "m5_causal_memory": c["m5"]["causal_memory"],
+            "kalman_sigma_a_floor": c["kalman"]["sigma_a_floor"],
+            "realisation": c["realisation"],
+            "confidence": c["confidence"],
+        }
+        return pd.DataFrame({"name": list(items), "value": [float(v) for v in items.values()]})
+
     def tables(self) -> dict[str, pd.DataFrame]:
         one = self.all_rmse[self.all_rmse["run"] == int(self.cfg["realisation"])]
         real_all = _wide(one, "rmse")[list(METHODS)]
@@ -510,6 +555,8 @@ class AlwagihStudy(Study):
         out["sensitivity"] = sensitivity(self.mean_rmse, self.cfg, sens["alpha0"], sens["window"])
         out["m5_bank"] = self.m5_bank
         out["tracks"] = self.tracks()
+        out["experiments"] = self.experiments()
+        out["settings"] = self.settings()
         return out
 
 
