@@ -475,3 +475,55 @@ def test_every_assumed_input_has_a_range_with_its_basis():
 def test_printed_table_rows_depend_on_nothing():
     for k in keys(r"(t\d|claim\.printed|text)\..*|claim\.(eq|alpha|init).*"):
         assert CLAIMS.depends_on(k) == (), k
+
+
+@claim_test(DOC, "claim.eq20_plus")
+def test_claim_eq20_plus(study):
+    # alpha = 0.75: beta = 1.25 + 1 = 2.25, z^2 + z + 0.25 = (z + 0.5)^2: a double pole at -0.5
+    assert np.roots([1, 0.75 + 2.25 - 2, 1 - 0.75]) == pytest.approx([-0.5, -0.5])
+    assert CLAIMS.compute(study, "claim.eq20_plus").value is True
+
+
+def impulse_response_of_the_recursion(a, b, n=400):
+    """x_p(t) for a unit impulse x_m(0) = 1, by eqs 3, 6, 8 written out (T = 1, zero start)."""
+    xp, vs, out = 0.0, 0.0, []
+    for t in range(n):
+        out.append(xp)
+        e = (1.0 if t == 0 else 0.0) - xp
+        xs = xp + a * e
+        vs = vs + b * e
+        xp = xs + vs
+    return np.array(out)
+
+
+@claim_test(DOC, "claim.eq11")
+def test_claim_eq11(study):
+    # eq 11 is the z-transform of the recursion's impulse response from x_m to x_p
+    for a, b in ((0.4, 0.2), (0.1, 0.0056), (1.2, 0.5)):
+        h = impulse_response_of_the_recursion(a, b)
+        w = np.array([0.2, 1.0, 2.5])
+        direct = np.array([np.sum(h * np.exp(-1j * x * np.arange(h.size))) for x in w])
+        np.testing.assert_allclose(stability.eq11_response(a, b, w), direct, atol=1e-9)
+    assert CLAIMS.compute(study, "claim.eq11").value is True
+
+
+@claim_test(DOC, "claim.eq23_tradeoff")
+def test_claim_eq23_tradeoff(study):
+    r = stability.eq23_tradeoff(np.array([0.1, 0.5, 1.0]))
+    # steady-state prediction lag behind a unit acceleration is T^2 / beta (beta = a^2/(2 - a))
+    np.testing.assert_allclose(r["lag"], (2 - r["alpha"]) / r["alpha"] ** 2, rtol=1e-6)
+    # alpha = beta = 1: x_p(t+1) = 2 x_m(t) - x_m(t-1), noise gain 1 + 4 = 5
+    assert r["vrf_pred"][-1] == pytest.approx(5.0)
+    assert CLAIMS.compute(study, "claim.eq23_tradeoff").value is True
+
+
+@pytest.mark.parametrize("key", params(r"claim\.printed\.t[12]\.suggested_better"))
+def test_printed_suggested_better(study, key):
+    table = key.split(".")[2]
+    ok = []
+    for c in "XY":
+        m = printed_means(table, c)
+        ok += [m[new] < m[base] for new in ("M3", "M4", "M5") for base in ("M1", "M2")]
+    assert CLAIMS.compute(study, key).value == all(ok) is False
+    # in Y, M3 and M4 are worse than M2 on average in the paper's own tables
+    assert ok.count(False) == 2

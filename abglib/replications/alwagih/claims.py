@@ -450,3 +450,70 @@ def _eq24(s):
         f"M2 (eq 24) vs the least-squares line through all earlier samples, 28 steps: "
         f"largest difference {err:.1g} m",
     )
+
+
+@CLAIMS.claim("claim.eq20_plus")
+def _eq20_plus(s):
+    gap = stability.eq20_double_pole_gap(np.linspace(0.01, 1.0, 100), sign=1.0)
+    return Result(
+        gap < 1e-6,
+        f"the + branch, beta = 2 - alpha + 2 sqrt(1 - alpha): largest pole separation over 100 "
+        f"alphas in (0, 1]: {gap:.2g}",
+    )
+
+
+@CLAIMS.claim("claim.eq11")
+def _eq11(s):
+    from ...analysis import frequency_response
+
+    a, b = stability.random_gains(s.cfg["stability_seed"], 50)
+    keep = np.asarray(is_stable(Gains(a, b)))
+    w = np.linspace(0.0, np.pi, 64)
+    err = max(
+        float(
+            np.max(
+                np.abs(
+                    stability.eq11_response(x, y, w) - frequency_response(Gains(x, y), "x_pred", w)
+                )
+            )
+        )
+        for x, y in zip(a[keep], b[keep], strict=True)
+    )
+    return Result(
+        err < 1e-9,
+        f"eq 11 against abglib's X_p/X_m (the one-step prediction) on {int(keep.sum())} stable "
+        f"random gain pairs, 64 frequencies: largest difference {err:.1g}",
+    )
+
+
+@CLAIMS.claim("claim.eq23_tradeoff")
+def _eq23_tradeoff(s):
+    r = stability.eq23_tradeoff(np.linspace(0.05, 1.0, 20))
+    ok = bool(np.all(np.diff(r["vrf_pred"]) > 0) and np.all(np.diff(r["lag"]) < 0))
+    return Result(
+        ok,
+        f"along eq 23b, alpha 0.05 -> 1: prediction noise gain {r['vrf_pred'][0]:.3g} -> "
+        f"{r['vrf_pred'][-1]:.3g} (rising), lag behind a unit acceleration {r['lag'][0]:.4g} -> "
+        f"{r['lag'][-1]:.3g} (falling)",
+    )
+
+
+@CLAIMS.family(r"claim\.printed\.t[12]\.suggested_better")
+def _p_suggested_better(s, key):
+    table = key.split(".")[2]
+    lost = []
+    for coord in ("X", "Y"):
+        m = _row(s.printed_wide, _noise(table), coord).mean()
+        for new in COMPARED:
+            for base in BASES:
+                if not m[new] < m[base]:
+                    lost.append(f"{new} vs {base} in {coord} ({m[new]:.1f} >= {m[base]:.1f} m)")
+    return Result(
+        not lost,
+        f"printed Table {table[1]}, mean RMSE over the experiments: "
+        + (
+            "every suggested method below both classical ones"
+            if not lost
+            else "not better: " + "; ".join(lost)
+        ),
+    )

@@ -4,7 +4,8 @@
 al.); :func:`eq20_double_pole_gap` and :func:`eq21_22_region` check eq 20 and the "final
 stability boundaries" of eqs 21-22 against the exact poles (:func:`abglib.analysis.poles`);
 :func:`alpha_above_one_has_negative_root` checks the claim that for ``alpha > 1`` the
-roots of eq 15 are never negative.
+roots of eq 15 are never negative; :func:`eq11_response` is the printed transfer function
+and :func:`eq23_tradeoff` the smoothing/manoeuvre compromise of section 5.1 along eq 23b.
 """
 
 from __future__ import annotations
@@ -17,6 +18,8 @@ from ...gains import Gains
 
 __all__ = [
     "alpha_above_one_has_negative_root",
+    "eq11_response",
+    "eq23_tradeoff",
     "eq20_double_pole_gap",
     "eq21_22_region",
     "random_gains",
@@ -90,3 +93,35 @@ def alpha_above_one_has_negative_root(a, b) -> dict:
     real = np.abs(p.imag) < 1e-12
     neg = (real & (p.real < 0)).any(axis=-1)
     return {"samples": int(sel.sum()), "with_negative_root": int(neg.sum())}
+
+
+def eq11_response(alpha, beta, wT):
+    """Eq 11 as printed, ``G(z) = (alpha (z - 1) + beta z) / (z^2 + (alpha + beta - 2) z
+    + (1 - alpha))``, on the unit circle ``z = exp(j wT)``."""
+    z = np.exp(1j * np.asarray(wT, float))
+    return (alpha * (z - 1) + beta * z) / (z**2 + (alpha + beta - 2) * z + (1 - alpha))
+
+
+def eq23_tradeoff(alphas, dt: float = 1.0, steps: int = 400) -> dict:
+    """Along eq 23b (``beta = alpha^2 / (2 - alpha)``): the noise gain of the one-step
+    prediction (variance reduction factor, :func:`abglib.analysis.vrf`) and its
+    steady-state lag behind a unit constant acceleration (noise-free simulation with
+    :func:`abglib.track`), per alpha - section 5.1's compromise between "good noise
+    smoothing, i.e. small alpha and beta" and "good maneuver following, i.e. large"."""
+    from ...analysis import vrf
+    from ...engine import track
+
+    a = np.asarray(alphas, float)
+    b = a**2 / (2 - a)
+    t = np.arange(steps) * dt
+    z = 0.5 * t**2
+    lag = np.array(
+        [
+            float(
+                z[-1]
+                - track(z, Gains(x, y), dt=dt, init="two_point", outputs=("x_pred",)).x_pred[-1]
+            )
+            for x, y in zip(a, b, strict=True)
+        ]
+    )
+    return {"alpha": a, "vrf_pred": np.asarray(vrf(Gains(a, b))["x_pred"], float), "lag": lag}
