@@ -17,7 +17,6 @@ from abglib.analysis._stability import (
     is_stable,
     pole_radius,
     poles,
-    stable_alwagih_eq12_14,
     stable_huang_eq5,
     stable_huang_eq7,
     stable_jury_steelman,
@@ -59,7 +58,6 @@ def test_alpha_beta_criteria_agree_with_eigenvalues(a, b):
     assume(abs(r - 1) > MARGIN)
     assert is_stable(gains) == (r < 1)
     assert stable_jury_steelman(gains) == (r < 1)  # eqs 42-44
-    assert stable_alwagih_eq12_14(a, b) == (r < 1)  # seed 001, eqs 12-14: exact as well
     assert pole_radius(gains) == pytest.approx(r, abs=1e-7)
 
 
@@ -183,12 +181,6 @@ def test_huang_eq7_is_necessary(a, b):
         assert stable_huang_eq7(a, b)
 
 
-def test_alwagih_needs_alpha_positive():
-    # eqs 13-14 alone (beta > 0, 2 alpha + beta < 4) admit alpha = -0.1: unstable (1 - alpha > 1)
-    assert not stable_alwagih_eq12_14(-0.1, 0.1)
-    assert truth(Gains(-0.1, 0.1)) > 1
-
-
 def test_bank_shapes():
     # Table 1 of seed 000: standard alpha-beta-gamma, standard alpha-beta, QD columns
     bank = Gains(np.array([0.3, 0.3, 0.3]), np.array([0.0356, 0.0267, 0.0362]),
@@ -208,7 +200,6 @@ def test_bank_shapes():
         (lambda: is_stable([0.3, 0.03]), "gains must be an abglib.Gains, got list"),
         (lambda: poles("x"), "gains must be an abglib.Gains, got str"),
         (lambda: stable_huang_eq5(0.3, np.nan, 0.01), "beta_h must be finite, got nan"),
-        (lambda: stable_alwagih_eq12_14("a", 0.1), "alpha must be a real number"),
     ],
 )
 def test_bad_input(call, match):

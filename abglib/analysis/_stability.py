@@ -23,7 +23,6 @@ __all__ = [
     "is_stable",
     "pole_radius",
     "poles",
-    "stable_alwagih_eq12_14",
     "stable_huang_eq5",
     "stable_huang_eq7",
     "stable_jury_steelman",
@@ -289,28 +288,3 @@ def stable_huang_eq7(alpha_h, beta_h):
     a = check_finite("alpha_h", alpha_h)
     b = check_finite("beta_h", beta_h)
     return scalar_or_array((a > -b) & (b > 0))
-
-
-def stable_alwagih_eq12_14(alpha, beta):
-    """Stability triangle of the alpha-beta tracker, seed 001, eqs 12-14, as printed.
-
-    Parameters
-    ----------
-    alpha, beta : float or array (S...)
-        Canonical alpha-beta gains.
-
-    Returns
-    -------
-    bool or bool array (S...)
-
-    Notes
-    -----
-    Seed 001, eqs 12-14 (after Llinas et al.): :math:`0 < \\alpha < 2`, :math:`\\beta > 0`,
-    :math:`2\\alpha + \\beta < 4`. These are exactly the Jury conditions of the quadratic
-    eq 15 (:math:`|1-\\alpha| < 1`, :math:`P(1) = \\beta > 0`,
-    :math:`P(-1) = 4 - 2\\alpha - \\beta > 0`), hence necessary and sufficient; eq 12's
-    upper bound :math:`\\alpha < 2` is implied by eqs 13-14.
-    """
-    a = check_finite("alpha", alpha)
-    b = check_finite("beta", beta)
-    return scalar_or_array((0 < a) & (a < 2) & (b > 0) & (2 * a + b < 4))

@@ -1,60 +1,37 @@
 # Seed 001: Al-Wagih & Abdulla, A Study of αβ Tracker with Some New Algorithms for
 # Selecting α and β Parameters. Methods M1-M5 (abglib.methods) on the ten reconstructed
-# experiments (dataset scenarios, datasets.smk), Tables 1-6, Figures 5-8, the t-test.
+# experiments (dataset scenarios, generated in memory), Tables 1-6, Figures 5-8, the t-test.
 
 AW = config.get("alwagih", {})
 if "alwagih" in DOCS and not AW:
     raise WorkflowError("config lists alwagih in docs but has no alwagih section")
 
 
-def alwagih_datasets(noise):
-    """Parquet files of the white or coloured experiments (manifests beside them)."""
-    return [dataset_files(name)[0] for name in AW.get("experiments", {}).get(noise, [])]
-
-
-def alwagih_manifests(wildcards):
-    return [
-        dataset_files(name)[1]
-        for noise in ("white", "coloured")
-        for name in AW["experiments"][noise]
-    ]
+# every table the study writes (abglib.replications.alwagih.study.AlwagihStudy.tables);
+# the study generates the ten experiments in memory from config["datasets"] (seeded, the
+# same data as the dataset rule writes)
+ALWAGIH_TABLES = [
+    "table1",
+    "table2",
+    "mc_rmse",
+    "tables34",
+    "ttests",
+    "tables56",
+    "consistency",
+    "causal",
+    "sensitivity",
+    "m5_bank",
+    "tracks",
+    "experiments",
+    "settings",
+]
 
 
 rule alwagih_reproduce:
     input:
-        published=sorted(str(f) for f in (PUBLISHED / "alwagih").glob("*.csv")),
-        white=alwagih_datasets("white"),
-        coloured=alwagih_datasets("coloured"),
-        manifests=alwagih_manifests,
+        published=published_tables_of("alwagih"),
     output:
-        reproduced="results/alwagih/reproduced.csv",
-        alternatives="results/alwagih/alternatives.csv",
-        rmse_runs="results/alwagih/rmse_runs.parquet",
-        table1=report(
-            "results/alwagih/table1.csv",
-            category="Al-Wagih",
-            subcategory="Tables",
-            labels={"table": "Table 1"},
-        ),
-        table2=report(
-            "results/alwagih/table2.csv",
-            category="Al-Wagih",
-            subcategory="Tables",
-            labels={"table": "Table 2"},
-        ),
-        mc_rmse=report(
-            "results/alwagih/mc_rmse.csv",
-            category="Al-Wagih",
-            subcategory="Tables",
-            labels={"table": "Monte Carlo RMSE"},
-        ),
-        tables34="results/alwagih/tables34.csv",
-        ttests="results/alwagih/ttests.csv",
-        tables56="results/alwagih/tables56.csv",
-        consistency="results/alwagih/consistency.csv",
-        causal="results/alwagih/causal.csv",
-        sensitivity="results/alwagih/sensitivity.csv",
-        tracks="results/alwagih/tracks.csv",
+        **reproduce_outputs("alwagih", ALWAGIH_TABLES),
     log:
         "logs/alwagih/reproduce.log",
     benchmark:
@@ -63,10 +40,15 @@ rule alwagih_reproduce:
         "../envs/abglib.yaml"
     params:
         library=LIBRARY_HASH,
-        cfg=AW,
+        doc="alwagih",
+        cfg=doc_config("alwagih", "datasets"),
+        overrides=config["tolerance_overrides"].get("alwagih", {}),
         digits=config["significant_digits"],
     script:
-        "../scripts/alwagih.py"
+        "../scripts/reproduce.py"
+
+
+ruleorder: alwagih_reproduce > comparison
 
 
 rule alwagih_figures:

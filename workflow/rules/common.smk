@@ -104,6 +104,10 @@ REPORT_CONTENT = {
             "consistency",
             "causal",
             "sensitivity",
+            "m5_bank",
+            "experiments",
+            "settings",
+            "robustness",
         ],
     },
     "antenna": {

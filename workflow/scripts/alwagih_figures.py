@@ -4,8 +4,6 @@ import pandas as pd
 
 from abglib.reporting.pipeline import log_to
 
-PAPER = ("M1", "M2", "M3", "M4", "M5")
-
 
 def main(input, output, params) -> None:
     from abglib.replications.alwagih.figures import (
@@ -13,6 +11,7 @@ def main(input, output, params) -> None:
         alwagih_rmse_bars,
         alwagih_tracks,
     )
+    from abglib.replications.alwagih.printed import PAPER_METHODS as PAPER
     from abglib.reporting.plotting import save_figure
 
     tracks = pd.read_csv(input.tracks)

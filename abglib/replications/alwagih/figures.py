@@ -7,7 +7,7 @@ import pandas as pd
 
 from ...reporting.plotting import _STYLE, plt
 
-__all__ = ['alwagih_causal', 'alwagih_rmse_bars', 'alwagih_tracks']
+__all__ = ["alwagih_causal", "alwagih_rmse_bars", "alwagih_tracks"]
 
 
 _METHOD_STYLE = {

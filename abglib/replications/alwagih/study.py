@@ -1,7 +1,9 @@
-r"""The simulation study of Al-Wagih & Abdulla (seed 001, sections 6-7) on abglib datasets.
+r"""The simulation study of Al-Wagih & Abdulla (seed 001, sections 6-7).
 
 Runs the methods of :mod:`abglib.methods` (M1-M5, the causal M5) and two steady-state
-Kalman designs on every experiment, and builds the paper's tables from the RMSEs:
+Kalman designs on the ten reconstructed experiments (dataset scenarios generated in
+memory with :func:`abglib.bench.datasets.generate`, deterministic and seeded, as the
+``dataset`` rule writes them), and builds the paper's tables from the RMSEs:
 
 * Tables 1-2: RMSE (eq 26) per experiment, coordinate and method - on one realisation,
   as the paper, and as Monte Carlo means with confidence intervals over all runs;
@@ -9,43 +11,62 @@ Kalman designs on every experiment, and builds the paper's tables from the RMSEs
   ``M2 - Mi`` (i = 3, 4, 5), with the paired t-test of section 7;
 * Tables 5-6: percentage changes with respect to M1 (eq 27).
 
-:func:`printed_consistency` recomputes Tables 3-6 from the *printed* Tables 1-2 (with the
-interval their rounding allows), a check of the paper against itself.
+:class:`AlwagihStudy` holds every table of the report; its RMSEs come from a cache keyed
+by the scenario and the method's own settings, so a study at another value of one
+assumed input (:func:`abglib.replications.evaluate`) recomputes only the methods and
+experiments that input changes.
 """
 
 from __future__ import annotations
 
+import copy
+import functools
+import json
 from collections.abc import Mapping
+from functools import cached_property
 
 import numpy as np
 import pandas as pd
 
 from ... import design, methods
 from ..._checks import AbglibValueError
+from ...bench import datasets
 from ...engine import track
+from .._claims import Study
+from .printed import BASES, COMPARED, PAPER_METHODS, printed_consistency, printed_t12
 
 __all__ = [
     "BASES",
+    "COMPARED",
     "METHODS",
     "PAPER_METHODS",
+    "AlwagihStudy",
     "compare_methods",
     "grid",
     "mc_summary",
     "paired_ttests",
     "paper_differences",
     "paper_percentages",
-    "printed_consistency",
     "rank_methods",
+    "reconstructed_scenarios",
+    "run_method",
     "run_methods",
     "sensitivity",
 ]
 
 #: The paper's five methods, then the causal M5 and the two Kalman designs (beyond it).
-PAPER_METHODS = ("M1", "M2", "M3", "M4", "M5")
 METHODS = (*PAPER_METHODS, "M5_causal", "kalata_ab", "kalman_ss")
-#: Methods the paper compares against (Tables 3-4, rows) and the compared ones (columns).
-BASES = ("M1", "M2")
-COMPARED = ("M3", "M4", "M5")
+#: The config entries (``alwagih`` section) each method reads.
+METHOD_SETTINGS = {
+    "M1": ("m1_alpha",),
+    "M2": (),
+    "M3": ("m3_w_grid",),
+    "M4": ("m4",),
+    "M5": ("m5",),
+    "M5_causal": ("m5",),
+    "kalata_ab": ("kalman",),
+    "kalman_ss": ("kalman",),
+}
 
 
 def grid(spec: Mapping) -> np.ndarray:
@@ -53,11 +74,13 @@ def grid(spec: Mapping) -> np.ndarray:
     return np.linspace(float(spec["start"]), float(spec["stop"]), int(spec["n"]))
 
 
-def run_methods(z, truth_acc, dt: float, sigma: float, cfg: Mapping) -> dict:
-    """Predictions ``x_pred`` (array like ``z``) of every method of :data:`METHODS`.
+def run_method(method: str, z, truth_acc, dt: float, sigma: float, cfg: Mapping):
+    """Predictions ``x_pred`` (array like ``z``) of one method of :data:`METHODS`.
 
     Parameters
     ----------
+    method : str
+        One of :data:`METHODS`.
     z : array (runs, n)
         Measurements of one coordinate.
     truth_acc : array (n,) or (runs, n)
@@ -77,31 +100,38 @@ def run_methods(z, truth_acc, dt: float, sigma: float, cfg: Mapping) -> dict:
     acceleration over the track, floored at ``kalman.sigma_a_floor`` - a design a user
     could make knowing the target's manoeuvre level, not the realised noise.
     """
-    out = {
-        "M1": methods.m1(z, cfg["m1_alpha"], dt).x_pred,
-        "M2": methods.m2(z, dt).x_pred,
-        "M3": methods.m3(z, grid(cfg["m3_w_grid"]), dt).x_pred,
-        "M4": methods.m4(
-            z, cfg["m4"]["alpha0"], int(cfg["m4"]["window"]), grid(cfg["m4"]["alpha_grid"]), dt
-        ).x_pred,
-    }
-    bank = grid(cfg["m5"]["alphas"])
-    out["M5"] = methods.m5(z, bank, dt).x_pred
-    out["M5_causal"] = methods.m5(
-        z, bank, dt, causal=True, memory=int(cfg["m5"]["causal_memory"])
-    ).x_pred
+    if method == "M1":
+        return methods.m1(z, cfg["m1_alpha"], dt).x_pred
+    if method == "M2":
+        return methods.m2(z, dt).x_pred
+    if method == "M3":
+        return methods.m3(z, grid(cfg["m3_w_grid"]), dt).x_pred
+    if method == "M4":
+        m4 = cfg["m4"]
+        return methods.m4(z, m4["alpha0"], int(m4["window"]), grid(m4["alpha_grid"]), dt).x_pred
+    if method in ("M5", "M5_causal"):
+        bank = grid(cfg["m5"]["alphas"])
+        if method == "M5":
+            return methods.m5(z, bank, dt).x_pred
+        return methods.m5(z, bank, dt, causal=True, memory=int(cfg["m5"]["causal_memory"])).x_pred
+    if method not in ("kalata_ab", "kalman_ss"):
+        raise AbglibValueError(f"method must be one of {list(METHODS)}, got {method!r}")
     sigma_a = max(
         float(np.sqrt(np.mean(np.square(truth_acc)))), float(cfg["kalman"]["sigma_a_floor"])
     )
-    for name, gains in (
-        ("kalata_ab", design.kalata_ab(sigma_a * dt**2 / sigma)),
-        ("kalman_ss", design.steady_state_kalman(sigma_a**2 * dt, sigma**2, dt, 2, "continuous")),
-    ):
-        out[name] = track(z, gains, dt=dt, init="two_point", outputs=("x_pred",)).x_pred
-    return out
+    if method == "kalata_ab":
+        gains = design.kalata_ab(sigma_a * dt**2 / sigma)
+    else:
+        gains = design.steady_state_kalman(sigma_a**2 * dt, sigma**2, dt, 2, "continuous")
+    return track(z, gains, dt=dt, init="two_point", outputs=("x_pred",)).x_pred
 
 
-def compare_methods(datasets_by_noise: Mapping, cfg: Mapping) -> pd.DataFrame:
+def run_methods(z, truth_acc, dt: float, sigma: float, cfg: Mapping, which=METHODS) -> dict:
+    """``{method: x_pred}`` of every method in ``which`` (:func:`run_method`)."""
+    return {m: run_method(m, z, truth_acc, dt, sigma, cfg) for m in which}
+
+
+def compare_methods(datasets_by_noise: Mapping, cfg: Mapping, which=METHODS) -> pd.DataFrame:
     """RMSE (eq 26) of every method, run, coordinate and experiment (long table).
 
     ``datasets_by_noise``: ``{"white": [Dataset, ...], "coloured": [...]}``, experiments
@@ -112,8 +142,10 @@ def compare_methods(datasets_by_noise: Mapping, cfg: Mapping) -> pd.DataFrame:
     for noise, dss in datasets_by_noise.items():
         for e, ds in enumerate(dss, start=1):
             for c in ds.coords:
-                preds = run_methods(ds.z[c], ds.truth_acc[c][0], ds.dt, ds.noise["sigma"], cfg)
-                for m in METHODS:
+                preds = run_methods(
+                    ds.z[c], ds.truth_acc[c][0], ds.dt, ds.noise["sigma"], cfg, which
+                )
+                for m in which:
                     r = methods.rmse(preds[m], ds.truth_pos[c])
                     frames.append(
                         pd.DataFrame(
@@ -152,12 +184,6 @@ def mc_summary(rmse: pd.DataFrame, confidence: float = 0.95) -> pd.DataFrame:
 
     keys = ["noise", "experiment", "coord", "method"]
     return rmse.groupby(keys, sort=False).apply(agg, include_groups=False).reset_index()
-
-
-def _wide(table: pd.DataFrame, value: str) -> pd.DataFrame:
-    return table.pivot_table(
-        index=["noise", "experiment", "coord"], columns="method", values=value, sort=False
-    )
 
 
 def paper_differences(rmse_wide: pd.DataFrame) -> pd.DataFrame:
@@ -219,12 +245,13 @@ def paper_percentages(rmse_wide: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
-def sensitivity(datasets_by_noise: Mapping, cfg: Mapping, alphas, windows) -> pd.DataFrame:
+def sensitivity(mean_rmse, cfg: Mapping, alphas, windows) -> pd.DataFrame:
     """How the paper's ranking depends on the settings it does not print.
 
     For every ``alpha_0`` (used by M1 and as M4's start) and M4 window length: the Monte
     Carlo mean RMSE of M1-M5 averaged over the experiments, per noise and coordinate, the
     ranking, and whether the paper's conclusion "M5, then M4, then M3" holds.
+    ``mean_rmse(cfg)`` gives those means as a Series indexed (noise, coord, method).
     """
     rows = []
     for a0 in alphas:
@@ -232,9 +259,7 @@ def sensitivity(datasets_by_noise: Mapping, cfg: Mapping, alphas, windows) -> pd
             c = dict(cfg)
             c["m1_alpha"] = float(a0)
             c["m4"] = dict(cfg["m4"], alpha0=float(a0), window=int(w))
-            table = compare_methods(datasets_by_noise, c)
-            table = table[table["method"].isin(PAPER_METHODS)]
-            means = table.groupby(["noise", "coord", "method"], sort=False)["rmse"].mean()
+            means = mean_rmse(c)
             for (noise, coord), g in means.groupby(level=["noise", "coord"], sort=False):
                 m = {k[2]: float(v) for k, v in g.items()}
                 rows.append(
@@ -265,85 +290,296 @@ def rank_methods(means: Mapping) -> str:
     return "<".join(sorted(means, key=lambda k: (means[k], k)))
 
 
-# --------------------------------------------------------------------------- the printed
-def _interval(f, values, half_units):
-    """Range of ``f`` over the box ``values +- half_units`` (f monotone in each input)."""
-    values = np.asarray(values, float)
-    h = np.asarray(half_units, float)
-    corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * values.size)).reshape(values.size, -1).T
-    vals = [f(values + c * h) for c in corners]
-    return min(vals), max(vals)
+# --------------------------------------------------------------------------- the study
+def reconstructed_scenarios(scenarios: Mapping, cfg: Mapping) -> dict:
+    """``{noise: [(name, spec), ...]}``: the experiments' dataset scenarios with the
+    reconstruction knobs of ``cfg["reconstruction"]`` applied.
 
-
-def printed_consistency(t12: pd.DataFrame) -> pd.DataFrame:
-    """Tables 3-6 recomputed from the printed Tables 1-2.
-
-    Parameters
-    ----------
-    t12 : DataFrame
-        Columns noise (``white`` = Table 1, ``coloured`` = Table 2), experiment, coord,
-        method, value (float as printed), half_unit (half a unit in its last digit).
-
-    Returns
-    -------
-    DataFrame
-        One row per cell of Tables 3-6: table, noise, base/experiment, coord, method,
-        ``central`` (from the printed values) and ``low``, ``high``: the range the
-        printed rounding of the inputs allows.
+    ``noise_scale`` multiplies every noise sigma, ``manoeuvre_scale`` every acceleration
+    (``acc`` of a segment, ``a0`` of a polynomial track), and ``coloured_rho`` replaces the
+    AR(1) coefficient of the coloured experiments. At ``1, 1`` and the scenarios' own rho
+    the specs are the scenarios unchanged (the data the ``dataset`` rule writes).
     """
-    need = {"noise", "experiment", "coord", "method", "value", "half_unit"}
-    if not need <= set(t12.columns):
-        raise AbglibValueError(f"t12 needs columns {sorted(need)}, got {list(t12.columns)}")
-    rows = []
-    tables = {"white": (3, 5), "coloured": (4, 6)}
-    for noise, (tdiff, tpc) in tables.items():
-        sub = t12[t12["noise"] == noise]
-        for coord in ("X", "Y"):
-            s = sub[sub["coord"] == coord]
-            val = s.pivot(index="experiment", columns="method", values="value")
-            hu = s.pivot(index="experiment", columns="method", values="half_unit")
-            exps = list(val.index)
-            for base in BASES:
-                for m in COMPARED:
-                    v = np.concatenate([val[base].to_numpy(), val[m].to_numpy()])
-                    h = np.concatenate([hu[base].to_numpy(), hu[m].to_numpy()])
-                    k = len(exps)
+    knobs = cfg["reconstruction"]
+    out = {}
+    for noise in ("white", "coloured"):
+        specs = []
+        for name in cfg["experiments"][noise]:
+            spec = copy.deepcopy(dict(scenarios[name]))
+            spec["noise"] = dict(spec["noise"])
+            if float(knobs["noise_scale"]) != 1.0:
+                spec["noise"]["sigma"] = float(spec["noise"]["sigma"]) * float(knobs["noise_scale"])
+            if spec["noise"].get("colour") == "ar1":
+                spec["noise"]["rho"] = float(knobs["coloured_rho"])
+            k = float(knobs["manoeuvre_scale"])
+            if k != 1.0:
+                for trk in spec["tracks"].values():
+                    if "a0" in trk:
+                        trk["a0"] = float(trk["a0"]) * k
+                    for seg in trk.get("segments", []):
+                        if "acc" in seg:
+                            seg["acc"] = float(seg["acc"]) * k
+            specs.append((name, spec))
+        out[noise] = specs
+    return out
 
-                    def f(x, k=k):
-                        return float(np.mean(x[:k] - x[k:]))
 
-                    lo, hi = _interval(f, v, h)
-                    rows.append(
-                        {
-                            "table": tdiff,
-                            "noise": noise,
-                            "row": base,
-                            "coord": coord,
-                            "method": m,
-                            "central": f(v),
-                            "low": lo,
-                            "high": hi,
-                        }
+def _key(x) -> str:
+    return json.dumps(x, sort_keys=True, default=str)
+
+
+@functools.lru_cache(maxsize=24)
+def _dataset(name: str, spec_json: str):
+    return datasets.generate(name, json.loads(spec_json))
+
+
+@functools.lru_cache(maxsize=8192)
+def _rmse(name: str, spec_json: str, coord: str, method: str, settings_json: str) -> np.ndarray:
+    ds = _dataset(name, spec_json)
+    cfg = json.loads(settings_json)
+    pred = run_method(method, ds.z[coord], ds.truth_acc[coord][0], ds.dt, ds.noise["sigma"], cfg)
+    r = np.asarray(methods.rmse(pred, ds.truth_pos[coord]), float)
+    r.setflags(write=False)
+    return r
+
+
+class AlwagihStudy(Study):
+    """Everything seed 001's claims and report read, computed lazily from the config
+    (``alwagih`` and ``datasets`` sections) and the published tables."""
+
+    doc = "alwagih"
+
+    # ------------------------------------------------------------ the reconstruction
+    @cached_property
+    def scenarios(self) -> dict:
+        return reconstructed_scenarios(self.config["datasets"]["scenarios"], self.cfg)
+
+    def rmse(self, method: str, cfg: Mapping | None = None) -> pd.DataFrame:
+        """RMSE (eq 26) of one method on every run, coordinate and experiment (long table:
+        noise, experiment, scenario, coord, method, run, rmse); ``cfg`` replaces the
+        ``alwagih`` section (the sensitivity sweep)."""
+        cfg = self.cfg if cfg is None else cfg
+        settings = _key({k: cfg[k] for k in METHOD_SETTINGS[method]})
+        frames = []
+        for noise, specs in self.scenarios.items():
+            for e, (name, spec) in enumerate(specs, start=1):
+                sj = _key(spec)
+                for c in sorted(spec["tracks"]):
+                    r = _rmse(name, sj, c, method, settings)
+                    frames.append(
+                        pd.DataFrame(
+                            {
+                                "noise": noise,
+                                "experiment": e,
+                                "scenario": name,
+                                "coord": c.upper(),
+                                "method": method,
+                                "run": np.arange(r.size),
+                                "rmse": r,
+                            }
+                        )
                     )
-            for e in exps:
-                for m in COMPARED:
-                    v = np.array([val.loc[e, "M1"], val.loc[e, m]])
-                    h = np.array([hu.loc[e, "M1"], hu.loc[e, m]])
+        return pd.concat(frames, ignore_index=True)
 
-                    def pc(x):
-                        return float(methods.percentage_change(x[0], x[1]))
+    @cached_property
+    def paper_rmse(self) -> pd.DataFrame:
+        return pd.concat([self.rmse(m) for m in PAPER_METHODS], ignore_index=True)
 
-                    lo, hi = _interval(pc, v, h)
-                    rows.append(
-                        {
-                            "table": tpc,
-                            "noise": noise,
-                            "row": f"experiment {e}",
-                            "coord": coord,
-                            "method": m,
-                            "central": pc(v),
-                            "low": lo,
-                            "high": hi,
-                        }
-                    )
-    return pd.DataFrame(rows)
+    @cached_property
+    def all_rmse(self) -> pd.DataFrame:
+        extra = [self.rmse(m) for m in METHODS if m not in PAPER_METHODS]
+        return pd.concat([self.paper_rmse, *extra], ignore_index=True)
+
+    @cached_property
+    def mc(self) -> pd.DataFrame:
+        """Monte Carlo mean RMSE of M1-M5: index (noise, experiment, coord), columns methods."""
+        return _wide(self.paper_rmse, "rmse", aggfunc="mean")[list(PAPER_METHODS)]
+
+    @cached_property
+    def real(self) -> pd.DataFrame:
+        """RMSE of M1-M5 on the configured realisation (the paper's single run)."""
+        one = self.paper_rmse[self.paper_rmse["run"] == int(self.cfg["realisation"])]
+        return _wide(one, "rmse")[list(PAPER_METHODS)]
+
+    @cached_property
+    def ttests(self) -> pd.DataFrame:
+        """Section 7's paired t-tests on the realisation."""
+        return paired_ttests(self.real)
+
+    @cached_property
+    def summary(self) -> pd.DataFrame:
+        return mc_summary(self.all_rmse, float(self.cfg["confidence"]))
+
+    def mean_rmse(self, cfg: Mapping) -> pd.Series:
+        """Monte Carlo mean RMSE of M1-M5 averaged over the experiments at ``cfg``,
+        indexed (noise, coord, method)."""
+        table = pd.concat([self.rmse(m, cfg) for m in PAPER_METHODS], ignore_index=True)
+        return table.groupby(["noise", "coord", "method"], sort=False)["rmse"].mean()
+
+    @cached_property
+    def m5_bank(self) -> pd.DataFrame:
+        """Monte Carlo mean RMSE of M5 (averaged over the experiments) per bank size K
+        (``m5_bank_sizes``, alphas evenly spaced on the configured interval)."""
+        rows = []
+        for k in self.cfg["m5_bank_sizes"]:
+            cfg = dict(
+                self.cfg, m5=dict(self.cfg["m5"], alphas=dict(self.cfg["m5"]["alphas"], n=int(k)))
+            )
+            g = self.rmse("M5", cfg).groupby(["noise", "coord"], sort=False)["rmse"].mean()
+            for (noise, coord), v in g.items():
+                rows.append({"noise": noise, "coord": coord, "K": int(k), "M5": float(v)})
+        return pd.DataFrame(rows)
+
+    # ------------------------------------------------------------ the printed tables
+    @cached_property
+    def t12(self) -> pd.DataFrame:
+        return printed_t12(self.published)
+
+    @cached_property
+    def printed_wide(self) -> pd.DataFrame:
+        """Printed Tables 1-2: index (noise, experiment, coord), columns M1-M5."""
+        return _wide(self.t12, "value")[list(PAPER_METHODS)]
+
+    @cached_property
+    def consistency(self) -> pd.DataFrame:
+        return printed_consistency(self.t12)
+
+    @cached_property
+    def printed_ttests(self) -> pd.DataFrame:
+        """Section 7's paired t-tests on the printed Tables 1-2 themselves."""
+        return paired_ttests(self.printed_wide)
+
+    # ------------------------------------------------------------ report tables
+    def tracks(self) -> pd.DataFrame:
+        """Tracks of the figure experiment (Figures 5-6): one realisation, every method."""
+        e = int(self.cfg["figure_experiment"])
+        run = int(self.cfg["realisation"])
+        frames = []
+        for noise, specs in self.scenarios.items():
+            name, spec = specs[e - 1]
+            ds = _dataset(name, _key(spec))
+            for c in ds.coords:
+                z = ds.z[c][run : run + 1]
+                preds = run_methods(z, ds.truth_acc[c][0], ds.dt, ds.noise["sigma"], self.cfg)
+                f = pd.DataFrame(
+                    {
+                        "noise": noise,
+                        "experiment": e,
+                        "coord": c.upper(),
+                        "t": ds.t,
+                        "truth": ds.truth_pos[c][run],
+                        "measured": ds.z[c][run],
+                    }
+                )
+                for m in METHODS:
+                    f[m] = preds[m][0]
+                frames.append(f)
+        return pd.concat(frames, ignore_index=True)
+
+    def experiments(self) -> pd.DataFrame:
+        """The reconstructed experiments as used (after the reconstruction knobs): noise,
+        sampling and the largest acceleration per coordinate with how long it acts."""
+        rows = []
+        for noise, specs in self.scenarios.items():
+            for e, (name, spec) in enumerate(specs, start=1):
+                ds = _dataset(name, _key(spec))
+                row = {
+                    "noise": noise,
+                    "experiment": e,
+                    "scenario": name,
+                    "dt": ds.dt,
+                    "n_samples": ds.n_samples,
+                    "runs": ds.runs,
+                    "sigma": float(spec["noise"]["sigma"]),
+                    "rho": float(spec["noise"].get("rho", 0.0)),
+                }
+                for c in ("x", "y"):
+                    acc = np.asarray(ds.truth_acc[c][0], float)
+                    row[f"{c}_max_abs_acc"] = float(np.max(np.abs(acc)))
+                    row[f"{c}_accelerating_s"] = float(np.sum(np.abs(acc) > 1e-9) * ds.dt)
+                rows.append(row)
+        return pd.DataFrame(rows)
+
+    def settings(self) -> pd.DataFrame:
+        """The methods' settings (config ``alwagih``) as a name/value table for the report."""
+        c = self.cfg
+        items = {
+            "m1_alpha": c["m1_alpha"],
+            "m3_w_points": c["m3_w_grid"]["n"],
+            "m4_alpha0": c["m4"]["alpha0"],
+            "m4_window": c["m4"]["window"],
+            "m4_alpha_points": c["m4"]["alpha_grid"]["n"],
+            "m4_alpha_low": c["m4"]["alpha_grid"]["start"],
+            "m4_alpha_high": c["m4"]["alpha_grid"]["stop"],
+            "m5_K": c["m5"]["alphas"]["n"],
+            "m5_alpha_low": c["m5"]["alphas"]["start"],
+            "m5_alpha_high": c["m5"]["alphas"]["stop"],
+            "m5_causal_memory": c["m5"]["causal_memory"],
+            "kalman_sigma_a_floor": c["kalman"]["sigma_a_floor"],
+            "realisation": c["realisation"],
+            "confidence": c["confidence"],
+        }
+        return pd.DataFrame({"name": list(items), "value": [float(v) for v in items.values()]})
+
+    def tables(self) -> dict[str, pd.DataFrame]:
+        one = self.all_rmse[self.all_rmse["run"] == int(self.cfg["realisation"])]
+        real_all = _wide(one, "rmse")[list(METHODS)]
+        mc_all = _wide(self.summary, "mean")[list(METHODS)]
+        out = {
+            "table1": real_all.xs("white", level="noise").reset_index(),
+            "table2": real_all.xs("coloured", level="noise").reset_index(),
+            "mc_rmse": self.summary,
+        }
+        diffs, pcs = [], []
+        for label, wide in (("realisation", self.real), ("monte_carlo", self.mc)):
+            d = paper_differences(wide)
+            d.insert(0, "basis", label)
+            diffs.append(d)
+            p = paper_percentages(wide)
+            p.insert(0, "basis", label)
+            pcs.append(p)
+        d = paper_differences(self.printed_wide)
+        d.insert(0, "basis", "printed_tables_1_2")
+        diffs.append(d)
+        out["tables34"] = pd.concat(diffs, ignore_index=True)
+        tests = []
+        for label, t in (("realisation", self.ttests), ("printed_tables_1_2", self.printed_ttests)):
+            t = t.copy()
+            t.insert(0, "basis", label)
+            tests.append(t)
+        out["ttests"] = pd.concat(tests, ignore_index=True)
+        out["tables56"] = pd.concat(pcs, ignore_index=True)
+        out["consistency"] = self.consistency
+        out["causal"] = causal_table(mc_all)
+        sens = self.cfg["sensitivity"]
+        out["sensitivity"] = sensitivity(self.mean_rmse, self.cfg, sens["alpha0"], sens["window"])
+        out["m5_bank"] = self.m5_bank
+        out["tracks"] = self.tracks()
+        out["experiments"] = self.experiments()
+        out["settings"] = self.settings()
+        return out
+
+
+def _wide(table: pd.DataFrame, value: str, aggfunc="first") -> pd.DataFrame:
+    return table.pivot_table(
+        index=["noise", "experiment", "coord"],
+        columns="method",
+        values=value,
+        sort=False,
+        aggfunc=aggfunc,
+    )
+
+
+def causal_table(wide: pd.DataFrame) -> pd.DataFrame:
+    """Share of M5's advantage over the best of M1-M4 that the causal M5 keeps (Monte
+    Carlo means; beyond the paper)."""
+    out = wide.reset_index()[["noise", "experiment", "coord"]].copy()
+    best_other = wide[["M1", "M2", "M3", "M4"]].min(axis=1).to_numpy()
+    out["best_of_M1_M4"] = best_other
+    for m in ("M5", "M5_causal", "kalata_ab", "kalman_ss"):
+        out[m] = wide[m].to_numpy()
+    gain = best_other - out["M5"].to_numpy()
+    out["share_of_M5_advantage_kept"] = np.where(
+        gain > 0, (best_other - out["M5_causal"].to_numpy()) / np.where(gain > 0, gain, 1), np.nan
+    )
+    return out

@@ -1,4 +1,5 @@
-"""The seed 001 study (abglib.replications.alwagih): tables, statistics, printed-table check."""
+"""The seed 001 study (abglib.replications.alwagih): tables, statistics, printed-table check,
+the reconstruction knobs and the RMSE cache."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ from scipy import stats
 
 from abglib import methods
 from abglib.bench import datasets
+from abglib.replications.alwagih import printed as printed_tables
 from abglib.replications.alwagih import study as alwagih
 
 CFG = {
@@ -130,7 +132,7 @@ def test_printed_consistency_reproduces_the_paper_where_it_is_consistent():
                         "half_unit": 5e-5,
                     }
                 )
-    out = alwagih.printed_consistency(pd.DataFrame(rows))
+    out = printed_tables.printed_consistency(pd.DataFrame(rows))
     r = out[(out["table"] == 5) & (out["coord"] == "X") & (out["method"] == "M3")].iloc[0]
     # Table 5 prints 6.2501 for experiment 1, X, M3
     assert r["central"] == pytest.approx(6.2501, abs=5e-5)
@@ -145,4 +147,69 @@ def test_printed_consistency_reproduces_the_paper_where_it_is_consistent():
 
 def test_printed_consistency_needs_its_columns():
     with pytest.raises(ValueError, match="t12 needs columns"):
-        alwagih.printed_consistency(pd.DataFrame({"noise": []}))
+        printed_tables.printed_consistency(pd.DataFrame({"noise": []}))
+
+
+SCENARIOS = {
+    "w": {
+        "dt": 1.0,
+        "n_samples": 20,
+        "runs": 3,
+        "seed": 1,
+        "noise": {"sigma": 4.0, "colour": "white"},
+        "tracks": {
+            "x": {"kind": "constant_acceleration", "p0": 0.0, "v0": 1.0, "a0": 0.5},
+            "y": {
+                "kind": "segments",
+                "p0": 0.0,
+                "v0": 0.0,
+                "segments": [{"t_start": 0.0, "t_end": 5.0, "acc": 2.0}],
+            },
+        },
+    },
+    "c": {
+        "dt": 1.0,
+        "n_samples": 20,
+        "runs": 3,
+        "seed": 2,
+        "noise": {"sigma": 4.0, "colour": "ar1", "rho": 0.7},
+        "tracks": {"x": {"kind": "constant_velocity", "p0": 0.0, "v0": 1.0}},
+    },
+}
+AW = {"experiments": {"white": ["w"], "coloured": ["c"]}}
+
+
+def test_reconstruction_knobs_at_one_leave_the_scenarios_unchanged():
+    cfg = dict(AW, reconstruction={"noise_scale": 1.0, "manoeuvre_scale": 1.0, "coloured_rho": 0.7})
+    out = alwagih.reconstructed_scenarios(SCENARIOS, cfg)
+    assert out["white"] == [("w", SCENARIOS["w"])] and out["coloured"] == [("c", SCENARIOS["c"])]
+
+
+def test_reconstruction_knobs_scale_noise_and_accelerations_and_set_rho():
+    cfg = dict(AW, reconstruction={"noise_scale": 2.0, "manoeuvre_scale": 0.5, "coloured_rho": 0.3})
+    out = alwagih.reconstructed_scenarios(SCENARIOS, cfg)
+    w = out["white"][0][1]
+    assert w["noise"]["sigma"] == 8.0
+    assert w["tracks"]["x"]["a0"] == 0.25 and w["tracks"]["y"]["segments"][0]["acc"] == 1.0
+    assert out["coloured"][0][1]["noise"] == {"sigma": 8.0, "colour": "ar1", "rho": 0.3}
+    assert SCENARIOS["w"]["noise"]["sigma"] == 4.0  # the config is not modified
+
+
+def test_run_method_refuses_an_unknown_method():
+    with pytest.raises(ValueError, match="method must be one of"):
+        alwagih.run_method("M9", np.zeros((1, 5)), np.zeros(5), 1.0, 1.0, CFG)
+
+
+def test_sensitivity_sets_alpha0_of_m1_and_m4_together():
+    seen = []
+
+    def mean_rmse(cfg):
+        seen.append((cfg["m1_alpha"], cfg["m4"]["alpha0"], cfg["m4"]["window"]))
+        idx = pd.MultiIndex.from_tuples(
+            [("white", "X", m) for m in alwagih.PAPER_METHODS], names=["noise", "coord", "method"]
+        )
+        return pd.Series([5.0, 4.0, 3.0, 2.0, 1.0], index=idx)
+
+    t = alwagih.sensitivity(mean_rmse, CFG, [0.05, 0.3], [4, 8])
+    assert seen == [(0.05, 0.05, 4), (0.05, 0.05, 8), (0.3, 0.3, 4), (0.3, 0.3, 8)]
+    assert t["M5_then_M4_then_M3"].all() and set(t["ranking"]) == {"M5<M4<M3<M2<M1"}
