@@ -209,6 +209,15 @@ def test_eq14_enbw(study):
     assert result(study, "eq14.enbw").value is True
 
 
+@claim_test(DOC, "eq12.partial_fractions")
+def test_eq12_partial_fractions(study):
+    # against the quadrature route, on the sets where the partial fractions are defined
+    abg = study.routes[study.routes["eq11_12_reconstructed"].notna()]
+    np.testing.assert_allclose(abg["eq11_12_reconstructed"], abg["numeric_integral"], rtol=1e-5)
+    assert len(abg) >= 6
+    assert result(study, "eq12.partial_fractions").value is True
+
+
 @claim_test(DOC, "eq13.printed")
 def test_eq13_printed(study):
     # literal eq 13 at Table 2, 10 Hz: 12.35 Hz (fsolve in test_huang_study) vs 286.55 Hz
