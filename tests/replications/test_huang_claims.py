@@ -362,7 +362,10 @@ def test_fig5_ab_cumulates(study):
     m = study.metrics.loc["ab_t2_10_printed"]
     assert m["lag_slope"] == pytest.approx(40 * T * T / 0.0025, rel=1e-3)
     assert result(study, "fig5.ab_cumulates").value is True
-    assert CLAIMS.depends_on("fig5.ab_cumulates") == ("huang.simulation.start",)
+    assert CLAIMS.depends_on("fig5.ab_cumulates") == (
+        "huang.simulation.start",
+        "huang.simulation.duration_s",
+    )
 
 
 @claim_test(DOC, "fig5.abg_converges")

@@ -45,6 +45,7 @@ GATE = "huang.gate_fraction_of_pulse"
 START = "huang.simulation.start"
 NOISE = "huang.simulation.noise"
 SETTLE = "huang.simulation.settle_fraction"
+DURATION = "huang.simulation.duration_s"
 
 #: Arbitrary stable gains (Huang's convention) for the literal eqs 1-2; not printed.
 _EQ12_GAINS = (0.5, 0.2, 0.01)
@@ -493,7 +494,7 @@ def _fig5_444(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig5.ab_cumulates", depends_on=(START,))
+@CLAIMS.claim("fig5.ab_cumulates", depends_on=(START, DURATION))
 def _fig5_cumulates(s: HuangStudy) -> Result:
     f5, *_ = _sim(s)
     m = s.metrics.loc[f"ab_t2_{f5}_printed"]
@@ -504,7 +505,7 @@ def _fig5_cumulates(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig5.abg_converges", depends_on=(START, NOISE))
+@CLAIMS.claim("fig5.abg_converges", depends_on=(START, NOISE, DURATION))
 def _fig5_converges(s: HuangStudy) -> Result:
     f5, *_ = _sim(s)
     m, p = s.metrics.loc[f"abg_t2_{f5}"], s.metrics.loc[f"abg_t2_{f5}_printed"]
@@ -516,7 +517,7 @@ def _fig5_converges(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig5.abg_less", depends_on=(START, NOISE))
+@CLAIMS.claim("fig5.abg_less", depends_on=(START, NOISE, DURATION))
 def _fig5_less(s: HuangStudy) -> Result:
     f5, *_ = _sim(s)
     ab, abg = s.metrics.loc[f"ab_t2_{f5}_printed"], s.metrics.loc[f"abg_t2_{f5}"]
@@ -552,7 +553,7 @@ def _fig5_flexible(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig5.abg_2hz", depends_on=(GATE, START, NOISE))
+@CLAIMS.claim("fig5.abg_2hz", depends_on=(GATE, START, NOISE, DURATION))
 def _fig5_2hz(s: HuangStudy) -> Result:
     _, lo, *_ = _sim(s)
     m = s.metrics.loc[f"abg_t2_{lo}"]
@@ -602,7 +603,7 @@ def _pair(s: HuangStudy, rule: str):
     return s.metrics.loc[f"abg_t{rule}_{lo}"], s.metrics.loc[f"abg_t{rule}_{hi}"], lo, hi
 
 
-@CLAIMS.claim("fig6.amplitude", depends_on=(START, SETTLE))
+@CLAIMS.claim("fig6.amplitude", depends_on=(START, SETTLE, DURATION))
 def _fig6_amplitude(s: HuangStudy) -> Result:
     a, b, lo, hi = _pair(s, "1")
     return Result(
@@ -613,7 +614,7 @@ def _fig6_amplitude(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig6.lost_4hz", depends_on=(GATE, START, NOISE))
+@CLAIMS.claim("fig6.lost_4hz", depends_on=(GATE, START, NOISE, DURATION))
 def _fig6_lost(s: HuangStudy) -> Result:
     a, _, lo, _ = _pair(s, "1")
     lost = _lost(s, f"abg_t1_{lo}")
@@ -629,7 +630,7 @@ def _fig6_lost(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig7.faster", depends_on=(START, SETTLE))
+@CLAIMS.claim("fig7.faster", depends_on=(START, SETTLE, DURATION))
 def _fig7_faster(s: HuangStudy) -> Result:
     a, b, lo, hi = _pair(s, "2")
     return Result(
@@ -639,7 +640,7 @@ def _fig7_faster(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig7.overshoot", depends_on=(START,))
+@CLAIMS.claim("fig7.overshoot", depends_on=(START, DURATION))
 def _fig7_overshoot(s: HuangStudy) -> Result:
     a, b, _, _ = _pair(s, "2")
     c, d, _, _ = _pair(s, "1")
@@ -651,7 +652,7 @@ def _fig7_overshoot(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig7.steady_low", depends_on=(GATE, START, NOISE))
+@CLAIMS.claim("fig7.steady_low", depends_on=(GATE, START, NOISE, DURATION))
 def _fig7_steady(s: HuangStudy) -> Result:
     a, _, lo, _ = _pair(s, "2")
     lost = _lost(s, f"abg_t2_{lo}")
@@ -662,7 +663,7 @@ def _fig7_steady(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig67.type2_better", depends_on=(START, NOISE))
+@CLAIMS.claim("fig67.type2_better", depends_on=(START, NOISE, DURATION))
 def _fig67(s: HuangStudy) -> Result:
     t1lo, t1hi, lo, hi = _pair(s, "1")
     t2lo, t2hi, _, _ = _pair(s, "2")
