@@ -211,6 +211,7 @@ display(
 display(verdicts("eq 8"))
 display(verdicts("eq 14"))
 display(verdicts("eqs 10-13"))
+display(verdicts("eqs 11-12"))
 display(verdicts("eqs 8-13"))
 
 # %% [markdown]
@@ -409,7 +410,7 @@ display(verdicts("Figs 6-7"))
 
 # %%
 conclusions = [
-    ("α-β-γ ENBW has a closed form (eqs 8–13)", ["eqs 8-13, derivation", "eqs 10-13 as printed", "eq 8, ENBW"]),
+    ("α-β-γ ENBW has a closed form (eqs 8–13)", ["eqs 8-13, derivation", "eqs 11-12, partial fractions", "eqs 10-13 as printed", "eq 8, ENBW"]),
     ("eq 14 is the α-β ENBW", ["eq 14, alpha-beta ENBW"]),
     ("eq 5 / eq 7 are the stability conditions", ["eq 5, stability", "eq 7, stability"]),
     ("type I = minimum mean-square; type II = critically damped", ["Type I rule", "Type II rule"]),
