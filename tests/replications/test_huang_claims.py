@@ -22,7 +22,7 @@ from abglib.analysis._statespace import state_space
 from abglib.conventions import from_huang, to_huang
 from abglib.replications._claims import config_with
 from abglib.replications.huang.claims import CLAIMS
-from abglib.reporting.compare import judge
+from abglib.reporting.compare import Alternative, judge
 
 from .conftest import claim_test, published, repo_config, study_for
 
@@ -52,13 +52,7 @@ def verdict(s, key):
     """The verdict of one key at the study's inputs (before the robustness sweep)."""
     row = PUB[PUB["key"] == key].iloc[0]
     res = result(s, key)
-    alts = [
-        type("A", (), {"alternative": r.description, "value": r.value, "section": r.section})
-        for r in res.readings
-    ]
-    from abglib.reporting.compare import Alternative
-
-    alts = [Alternative(key, a.alternative, a.value, a.section) for a in alts]
+    alts = [Alternative(key, r.description, r.value, r.section) for r in res.readings]
     return judge(DOC, row, res.value, res.note, alts)["verdict"]
 
 
@@ -488,4 +482,5 @@ def test_every_assumed_input_has_a_range_and_every_dependency_is_declared():
     ranges = plausible_ranges(repo_config(), DOC)
     used = {i for k in PUB["key"] for i in CLAIMS.depends_on(k)}
     assert used == set(ranges)
-    # no note may say "hinges on" without depends_on (the study's own notes never do)
+    for name, rng in ranges.items():
+        assert rng.basis and len(rng.values) >= 2, name

@@ -71,7 +71,7 @@ def huang_bandwidth_figure(
             )
             ax.semilogy(
                 m["xi_nominal"], m["bn_nominal_hz"] * dt, "x", color="k", ms=7,
-                label="ξ that gives the nominal 2/10/20 Hz" if order == 2 else None,
+                label="ξ that gives the nominal ENBW" if order == 2 else None,
             )
             for r in m[~np.isfinite(m["enbw_exact"])].itertuples(index=False):
                 ax.annotate(
@@ -79,7 +79,7 @@ def huang_bandwidth_figure(
                     xytext=(5, 5), textcoords="offset points", fontsize=7, color=color,
                 )
                 ax.plot([r.xi_printed], [r.bn_nominal_hz * dt], "v", color=color, ms=6)
-        for bn in (2, 10, 20):
+        for bn in sorted(set(mk["bn_nominal_hz"])):
             ax.axhline(bn * dt, color="0.6", lw=0.6, ls=":")
         ax.set_xlabel("ξ (smoothing factor)")
         ax.set_ylabel("B_n·T (one-sided ENBW × sample interval)")
