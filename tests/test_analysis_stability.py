@@ -17,8 +17,6 @@ from abglib.analysis._stability import (
     is_stable,
     pole_radius,
     poles,
-    stable_huang_eq5,
-    stable_huang_eq7,
     stable_jury_steelman,
     stable_sufficient_eq49,
 )
@@ -134,53 +132,6 @@ def test_steelman_remarks_after_eq48(a, b, g):
         assert b > 0
 
 
-# ----------------------------------------------------------------------- Huang et al. eq 5, 7
-def test_huang_eq5_counterexample_unstable():
-    # Huang's convention (seed 002): gamma_H = gamma / 2. (0.1, 0.01, 0.1) satisfies every line
-    # of eq 5 (4 - 0.2 - 0.01 > 0, 0.2 - 0.1 > 0, beta, gamma > 0) but violates the missing
-    # Jury condition alpha beta + alpha gamma_H - 2 gamma_H = 0.001 + 0.01 - 0.2 < 0
-    a, b, gh = 0.1, 0.01, 0.1
-    assert stable_huang_eq5(a, b, gh)
-    canonical = Gains(a, b, 2 * gh)
-    assert not is_stable(canonical)
-    assert truth(canonical) == pytest.approx(1.2981, abs=1e-4)  # complex pair 1.128 +- 0.643j
-
-
-@settings(max_examples=300, deadline=None)
-@given(box_a, box_b, box_g)
-def test_huang_eq5_is_necessary_but_not_sufficient(a, b, gh):
-    # stable => eq 5 (its 2 alpha > gamma_H follows from Jury: gamma_H (2 - alpha) < alpha beta
-    # and beta < 4 - 2 alpha); eq 5 and unstable => the missing condition fails
-    assume(gh != 0)  # eq 5 is Huang's alpha-beta-gamma criterion; eq 7 covers gamma = 0
-    gains = Gains(a, b, 2 * gh)
-    r = truth(gains)
-    assume(abs(r - 1) > MARGIN)
-    if r < 1:
-        assert stable_huang_eq5(a, b, gh)
-    elif stable_huang_eq5(a, b, gh):
-        assert a * b + a * gh - 2 * gh <= 0
-
-
-@pytest.mark.parametrize(
-    ("a", "b"),
-    [
-        (3.0, 0.1),  # alpha > 2: eq 7 holds (3 > -0.1, 0.1 > 0), pole at z = -2.05
-        (-0.05, 0.5),  # alpha < 0: eq 7 holds (-0.05 > -0.5), pole |1 - alpha| product > 1
-        (1.9, 0.5),  # 2 alpha + beta = 4.3 > 4: eq 7 holds, real pole < -1
-    ],
-)
-def test_huang_eq7_counterexamples(a, b):
-    assert stable_huang_eq7(a, b)
-    assert not is_stable(Gains(a, b)) and truth(Gains(a, b)) > 1
-
-
-@settings(max_examples=100, deadline=None)
-@given(box_a, box_b)
-def test_huang_eq7_is_necessary(a, b):
-    if truth(Gains(a, b)) < 1 - MARGIN:
-        assert stable_huang_eq7(a, b)
-
-
 def test_bank_shapes():
     # Table 1 of seed 000: standard alpha-beta-gamma, standard alpha-beta, QD columns
     bank = Gains(np.array([0.3, 0.3, 0.3]), np.array([0.0356, 0.0267, 0.0362]),
@@ -199,7 +150,6 @@ def test_bank_shapes():
     [
         (lambda: is_stable([0.3, 0.03]), "gains must be an abglib.Gains, got list"),
         (lambda: poles("x"), "gains must be an abglib.Gains, got str"),
-        (lambda: stable_huang_eq5(0.3, np.nan, 0.01), "beta_h must be finite, got nan"),
     ],
 )
 def test_bad_input(call, match):

@@ -1,4 +1,5 @@
-"""Transfer functions (seed 000, eqs 36-41; seed 002, eqs 3, 6) against independent twins.
+"""Transfer functions (seed 000, eqs 36-41) against independent twins (seed 002's printed
+eqs 3, 6: tests/replications/test_huang_printed.py).
 
 Twins: the state-space form C (zI - F)^-1 K built from eqs 1-6 (abglib.analysis._statespace),
 the DFT of the impulse response of the compiled recursion (abglib.track), scipy.signal.freqz
@@ -20,7 +21,6 @@ from abglib.analysis._transfer import (
     OUTPUTS,
     frequency_response,
     transfer_function,
-    transfer_function_huang,
 )
 
 # frequency grid avoiding wT = 0 (where the 3-state model of an alpha-beta tracker is
@@ -143,23 +143,6 @@ def test_coefficients_match_python_control(output, theta):
 
 
 @settings(max_examples=30, deadline=None)
-@given(stable_gains())
-def test_huang_eq3_eq6_is_canonical_predicted_position(gains):
-    # seed 002: gamma_H = gamma / 2 (CONTRACTS.md section 1); their H(z) is X_p / X (eq 39)
-    hn, hd = transfer_function_huang(gains.alpha, gains.beta, gains.gamma / 2)
-    num, den = transfer_function(gains, "x_pred")
-    np.testing.assert_allclose(hn, num, atol=1e-14)
-    np.testing.assert_allclose(hd, den, atol=1e-14)
-
-
-def test_huang_eq6_as_printed():
-    # eq 6 with alpha = 0.5, beta = 0.2 (arbitrary): ((a+b) z - a) / (z^2 + (a+b-2) z + 1-a)
-    num, den = transfer_function_huang(0.5, 0.2)
-    np.testing.assert_allclose(num, [0.0, 0.7, -0.5], atol=1e-15)
-    np.testing.assert_allclose(den, [1.0, -1.3, 0.5], atol=1e-15)
-
-
-@settings(max_examples=30, deadline=None)
 @given(stable_gains(), st.floats(0.1, 5.0))
 def test_dc_gain_and_ramp_following(gains, dt):
     # unit DC gain of the position outputs (type-2/3 loop), and Vbar/X -> j w / T at low
@@ -203,7 +186,6 @@ def test_bank_broadcast_matches_scalars():
             r"wT must be finite, got nan at index 1",
         ),
         (lambda: frequency_response(Gains(0.3, 0.03), "v_pred", 0.1, dt=-1), "dt must be > 0"),
-        (lambda: transfer_function_huang(0.3, np.inf), "beta_h must be finite, got inf"),
     ],
 )
 def test_bad_input(call, match):

@@ -16,13 +16,11 @@ from hypothesis import strategies as st
 from abglib import Gains, track
 from abglib.analysis._transient import (
     steady_state_lag,
-    steady_state_lag_huang,
     transient_a2,
     transient_a2_simpson,
     transient_d2,
     transient_d2_simpson,
 )
-from abglib.conventions import from_huang
 
 from .strategies import stable_gain_strategies, standard_abg
 
@@ -151,31 +149,6 @@ def test_jerk_lag_alpha_beta_grows():
     assert e2 > 1.9 * e1 > 0  # grows linearly with time
 
 
-def test_huang_acceleration_lag_is_the_predicted_position():
-    # seed 002, "Simulation analysis": F_r = 300 Hz, A = 1000 m/s^2, Table 2 type II
-    # alpha-beta at 10 Hz: alpha = 0.098, beta = 0.0025; printed lag 4.44 m
-    A, dt, alpha, beta = 1000.0, 1 / 300, 0.098, 0.0025
-    huang = steady_state_lag_huang(beta, A, dt)
-    assert huang == pytest.approx(4.44, abs=0.005)
-    assert huang == pytest.approx(steady_state_lag(Gains(alpha, beta), dt, "acceleration", A))
-    assert huang != pytest.approx(
-        steady_state_lag(Gains(alpha, beta), dt, "acceleration", A, "x_smooth")
-    )
-
-
-def test_huang_jerk_lag_is_twice_the_truth_in_his_convention():
-    # seed 002, Table 2 type II alpha-beta-gamma at 2 Hz: alpha = 0.71, beta = 0.29,
-    # gamma_H = 0.020 (his convention); B = 40 m/s^3, F_r = 300 Hz ("Simulation analysis")
-    B, dt, a, b, gh = 40.0, 1 / 300, 0.71, 0.29, 0.020
-    g = from_huang(a, b, gh)
-    exact = steady_state_lag(g, dt, "jerk", B)
-    pred, _ = simulated_lag(g, dt, "jerk", B, 3000)
-    assert pred == pytest.approx(exact, rel=1e-7)
-    assert steady_state_lag_huang(gh, B, dt, kind="jerk") == pytest.approx(2 * exact, rel=1e-12)
-    # read with the canonical gamma (= 2 gamma_H), the printed formula is exact
-    assert steady_state_lag_huang(g.gamma, B, dt, kind="jerk") == pytest.approx(exact, rel=1e-12)
-
-
 # --------------------------------------------------------------------------- bad input
 def test_bad_input_messages():
     with pytest.raises(ValueError, match=r"transient error sums are unbounded: gains"):
@@ -190,5 +163,3 @@ def test_bad_input_messages():
         steady_state_lag(Gains(0.5, 0.2), output="v")
     with pytest.raises(ValueError, match=r"steady-state lag is undefined: gains"):
         steady_state_lag(Gains(2.5, 0.2))
-    with pytest.raises(ValueError, match=r"gain must be > 0, got 0\.0"):
-        steady_state_lag_huang(0.0, 1.0, 1.0)

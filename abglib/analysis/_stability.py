@@ -5,8 +5,9 @@ Jury's inequalities in closed form in the gains (from eq 40), so
 that gains exactly on the boundary (a pole exactly on the unit circle) are classified
 without rounding. :func:`poles` and :func:`pole_radius` give the numeric poles. The
 criteria printed in the seeds are kept *as printed* under their own names
-(``stable_jury_steelman``, ``stable_sufficient_eq49``, ``stable_huang_eq5``,
-``stable_huang_eq7``, ``stable_alwagih_eq12_14``); the tests compare each with the truth and
+(``stable_jury_steelman``, ``stable_sufficient_eq49``; seed 001's eqs 12-14 are in
+:mod:`abglib.replications.alwagih.stability`, seed 002's eqs 5 and 7 in
+:mod:`abglib.replications.huang.printed`); the tests compare each with the truth and
 pin the gains where a printed criterion is wrong.
 """
 
@@ -14,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._checks import AbglibValueError, check_finite, scalar_or_array
+from .._checks import AbglibValueError, scalar_or_array
 from ..gains import Gains, require_gains
 
 __all__ = [
@@ -23,8 +24,6 @@ __all__ = [
     "is_stable",
     "pole_radius",
     "poles",
-    "stable_huang_eq5",
-    "stable_huang_eq7",
     "stable_jury_steelman",
     "stable_sufficient_eq49",
 ]
@@ -237,54 +236,3 @@ def stable_sufficient_eq49(gains: Gains):
     """
     a, b, g = require_gains(gains).as_arrays()
     return scalar_or_array((0 < a) & (a < 2) & (2 * a + b < 4) & (a * b > g) & (g > 0))
-
-
-def stable_huang_eq5(alpha_h, beta_h, gamma_h):
-    """Stability condition of seed 002, eq 5, as printed (Huang's gain convention).
-
-    Parameters
-    ----------
-    alpha_h, beta_h, gamma_h : float or array (S...)
-        Gains in Huang et al.'s convention (``gamma_h = gamma / 2``).
-
-    Returns
-    -------
-    bool or bool array (S...)
-
-    Notes
-    -----
-    Seed 002, eq 5 ("according to Routh principle"): :math:`4 - 2\\alpha - \\beta > 0`,
-    :math:`2\\alpha - \\gamma > 0`, :math:`\\beta > 0`, :math:`\\gamma > 0`. This is
-    necessary but **not sufficient**: it lacks the Jury condition
-    :math:`\\alpha\\beta + \\alpha\\gamma_H - 2\\gamma_H > 0` (seed 000, eq 47 with
-    :math:`\\gamma = 2\\gamma_H`); e.g. :math:`(\\alpha, \\beta, \\gamma_H) = (0.1, 0.01, 0.1)`
-    satisfies eq 5 but has a pole at :math:`|z| > 1` (pinned in the tests).
-    """
-    a = check_finite("alpha_h", alpha_h)
-    b = check_finite("beta_h", beta_h)
-    g = check_finite("gamma_h", gamma_h)
-    return scalar_or_array((4 - 2 * a - b > 0) & (2 * a - g > 0) & (b > 0) & (g > 0))
-
-
-def stable_huang_eq7(alpha_h, beta_h):
-    """Stability condition of the alpha-beta loop, seed 002, eq 7, as printed.
-
-    Parameters
-    ----------
-    alpha_h, beta_h : float or array (S...)
-        Gains (the alpha-beta gains are the same in Huang's and the canonical convention).
-
-    Returns
-    -------
-    bool or bool array (S...)
-
-    Notes
-    -----
-    Seed 002, eq 7: :math:`\\alpha > -\\beta`, :math:`\\beta > 0`. Necessary but far from
-    sufficient: the true region (seed 000, eqs 42-44) also needs :math:`\\alpha > 0` and
-    :math:`2\\alpha + \\beta < 4`; e.g. :math:`(\\alpha, \\beta) = (3, 0.1)` and
-    :math:`(-0.05, 0.5)` satisfy eq 7 but are unstable (pinned in the tests).
-    """
-    a = check_finite("alpha_h", alpha_h)
-    b = check_finite("beta_h", beta_h)
-    return scalar_or_array((a > -b) & (b > 0))

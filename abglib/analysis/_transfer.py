@@ -21,7 +21,6 @@ __all__ = [
     "OUTPUTS",
     "frequency_response",
     "transfer_function",
-    "transfer_function_huang",
 ]
 
 #: Output names accepted by :func:`transfer_function` and :func:`frequency_response`.
@@ -169,53 +168,6 @@ def transfer_function(gains: Gains, output: str, dt: float = 1.0):
     num_w, zf, den_w = _w_forms(a, b, g, output, T, reduced)
     length = len(den_w)
     return _expand(num_w, zf, length), _expand(den_w, 0, length)
-
-
-def transfer_function_huang(alpha_h, beta_h, gamma_h=0.0):
-    """Closed-loop transfer function of Huang et al., seed 002, eqs 3 and 6, as printed.
-
-    Parameters
-    ----------
-    alpha_h, beta_h, gamma_h : float or array (S...)
-        Gains in *Huang's* convention (seed 002, eq 1): ``gamma_h`` is half the canonical
-        ``gamma`` (their acceleration update is ``2 gamma_h / T^2``). No conversion is done
-        here; see :mod:`abglib.conventions`.
-
-    Returns
-    -------
-    num, den : array (S..., m)
-        Descending powers of ``z``; ``num`` zero-padded to the length of ``den``. Eq 3
-        (``m = 4``) unless every ``gamma_h`` is zero, then eq 6 (``m = 3``).
-
-    Notes
-    -----
-    Seed 002, eq 3:
-
-    .. math::
-        H(z) = \\frac{(\\alpha+\\beta+\\gamma)z^2 + (-\\beta-2\\alpha+\\gamma)z + \\alpha}
-        {z^3 + (-3+\\alpha+\\beta+\\gamma)z^2 + (3-\\beta-2\\alpha+\\gamma)z - (1-\\alpha)}
-
-    and eq 6 (:math:`\\gamma = 0`):
-    :math:`H(z) = ((\\alpha+\\beta)z - \\alpha)/(z^2 + (-2+\\alpha+\\beta)z + (1-\\alpha))`.
-    The scan prints the last numerator coefficient of both as ``a``: an OCR slip for
-    :math:`\\alpha` (only with :math:`\\alpha` there does the loop have unit DC gain,
-    ``H(1) = 1``, as a tracking loop must). With :math:`\\gamma_H = \\gamma/2` this is the
-    canonical :math:`X_p/X` (seed 000, eq 39) -- Huang's ``H`` is the *predicted*
-    position, which the tests check.
-    """
-    a = check_finite("alpha_h", alpha_h)
-    b = check_finite("beta_h", beta_h)
-    g = check_finite("gamma_h", gamma_h)
-    a, b, g = np.broadcast_arrays(a, b, g)
-    if np.all(g == 0.0):
-        # eq 6
-        num = np.stack([np.zeros_like(a), a + b, -a], axis=-1)
-        den = np.stack([np.ones_like(a), -2.0 + a + b, 1.0 - a], axis=-1)
-    else:
-        # eq 3
-        num = np.stack([np.zeros_like(a), a + b + g, -b - 2.0 * a + g, a], axis=-1)
-        den = np.stack([np.ones_like(a), -3.0 + a + b + g, 3.0 - b - 2.0 * a + g, -(1.0 - a)], -1)
-    return num, den
 
 
 def frequency_response(gains: Gains, output: str, wT, dt: float = 1.0):

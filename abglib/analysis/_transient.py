@@ -15,14 +15,15 @@ acceleration error of ``A_a^2`` are already 1 per-sample unit).
 
 :func:`steady_state_lag` gives the steady-state position error for a constant
 acceleration or a constant jerk from the final-value theorem; Huang et al.'s printed
-formulas (seed 002, "Tracking errors") are :func:`steady_state_lag_huang`.
+formulas (seed 002, "Tracking errors") are
+:func:`abglib.replications.huang.printed.steady_state_lag_huang`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from .._checks import AbglibValueError, check_finite, check_positive, scalar_or_array
+from .._checks import AbglibValueError, check_finite, scalar_or_array
 from ..engine import track
 from ..gains import Gains
 from ._stability import pole_radius, require_stable
@@ -30,7 +31,6 @@ from ._variance import _broadcast
 
 __all__ = [
     "steady_state_lag",
-    "steady_state_lag_huang",
     "transient_a2",
     "transient_a2_simpson",
     "transient_d2",
@@ -325,7 +325,8 @@ def steady_state_lag(gains: Gains, dt=1.0, kind="acceleration", magnitude=1.0, o
     0 for an alpha-beta-gamma tracker under acceleration and ``inf`` for an alpha-beta
     tracker under jerk. ``gamma`` is canonical: in Huang et al.'s convention
     (``gamma_H = gamma / 2``) the jerk lag is ``J T^3 / (2 gamma_H)``, half of seed 002's
-    printed ``B / (gamma F_r^3)`` (:func:`steady_state_lag_huang`).
+    printed ``B / (gamma F_r^3)``
+    (:func:`abglib.replications.huang.printed.steady_state_lag_huang`).
     """
     if kind not in _KINDS:
         raise AbglibValueError(f"kind must be one of {', '.join(map(repr, _KINDS))}, got {kind!r}")
@@ -352,39 +353,3 @@ def steady_state_lag(gains: Gains, dt=1.0, kind="acceleration", magnitude=1.0, o
     return scalar_or_array(np.asarray(lag, dtype=float))
 
 
-def steady_state_lag_huang(gain, magnitude, dt, kind="acceleration"):
-    r"""Huang et al.'s steady-state errors, as printed (seed 002, "Tracking errors").
-
-    Parameters
-    ----------
-    gain : float or array (...)
-        ``beta`` for ``kind="acceleration"``; Huang's ``gamma_H`` (half the canonical
-        gamma) for ``kind="jerk"``.
-    magnitude : float or array (...)
-        Target acceleration ``A`` (units/s^2) or its rate of change ``B`` (units/s^3).
-    dt : float or array (...)
-        Sample interval ``T = 1/F_r`` > 0.
-    kind : {"acceleration", "jerk"}, default "acceleration"
-
-    Returns
-    -------
-    float or array (...)
-        ``A / (beta F_r^2)`` or ``B / (gamma_H F_r^3)``.
-
-    Notes
-    -----
-    Seed 002: ``e = A / (beta F_r^2)`` (alpha-beta, acceleration) and
-    ``e = B / (gamma F_r^3)`` (alpha-beta-gamma, acceleration change), ``F_r = 1/T``.
-    The first is exactly the steady-state *predicted*-position error (their ``H(z)`` is
-    ``X_p/X``; :func:`steady_state_lag` with ``output="x_pred"``). The second is exact
-    only if ``gamma`` is read as the canonical gain; with their own ``gamma_H`` (eq 3)
-    the predicted-position lag is ``B T^3 / (2 gamma_H)``, half the printed value.
-    """
-    if kind not in _KINDS:
-        raise AbglibValueError(f"kind must be one of {', '.join(map(repr, _KINDS))}, got {kind!r}")
-    k = check_positive("gain", gain)
-    m = check_finite("magnitude", magnitude)
-    T = check_positive("dt", dt)
-    fr = 1.0 / T
-    power = 2 if kind == "acceleration" else 3
-    return scalar_or_array(np.asarray(m / (k * fr**power), dtype=float))

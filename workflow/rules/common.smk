@@ -83,10 +83,10 @@ REPORT_CONTENT = {
         "figures": ["fig2", "fig3", "fig4", "fig5", "fig6", "fig7"],
         "tables": [
             "comparison",
+            "robustness",
             "tables12",
             "enbw_routes",
             "track_metrics",
-            "checks",
             "bandwidth_curves",
             "thermal",
         ],

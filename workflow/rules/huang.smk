@@ -13,25 +13,14 @@ HUANG_TABLES = [
     "enbw_routes",
     "track",
     "track_metrics",
-    "checks",
 ]
 
 
 rule huang_reproduce:
     input:
-        published=sorted(str(f) for f in (PUBLISHED / "huang").glob("*.csv")),
+        published=published_tables_of("huang"),
     output:
-        **{
-            t: report(
-                f"results/huang/{t}.csv",
-                category="Huang et al.",
-                subcategory="Tables",
-                labels={"table": t},
-            )
-            for t in HUANG_TABLES
-        },
-        reproduced="results/huang/reproduced.csv",
-        alternatives="results/huang/alternatives.csv",
+        **reproduce_outputs("huang", HUANG_TABLES),
     log:
         "logs/huang/reproduce.log",
     benchmark:
@@ -40,10 +29,15 @@ rule huang_reproduce:
         "../envs/abglib.yaml"
     params:
         library=LIBRARY_HASH,
-        cfg=HG,
+        doc="huang",
+        cfg=doc_config("huang"),
+        overrides=config["tolerance_overrides"].get("huang", {}),
         digits=config["significant_digits"],
     script:
-        "../scripts/huang.py"
+        "../scripts/reproduce.py"
+
+
+ruleorder: huang_reproduce > comparison
 
 
 rule huang_figures:
@@ -52,6 +46,8 @@ rule huang_figures:
         tables12="results/huang/tables12.csv",
         thermal="results/huang/thermal.csv",
         track="results/huang/track.csv",
+        track_metrics="results/huang/track_metrics.csv",
+        published=published_tables_of("huang"),
     output:
         **{
             f: report(

@@ -7,7 +7,12 @@ import pandas as pd
 
 from ...reporting.plotting import _STYLE, plt
 
-__all__ = ['huang_bandwidth_figure', 'huang_thermal_figure', 'huang_track_figure']
+__all__ = [
+    "huang_bandwidth_figure",
+    "huang_figures",
+    "huang_thermal_figure",
+    "huang_track_figure",
+]
 
 
 
@@ -66,7 +71,7 @@ def huang_bandwidth_figure(
             )
             ax.semilogy(
                 m["xi_nominal"], m["bn_nominal_hz"] * dt, "x", color="k", ms=7,
-                label="ξ that gives the nominal 2/10/20 Hz" if order == 2 else None,
+                label="ξ that gives the nominal ENBW" if order == 2 else None,
             )
             for r in m[~np.isfinite(m["enbw_exact"])].itertuples(index=False):
                 ax.annotate(
@@ -74,7 +79,7 @@ def huang_bandwidth_figure(
                     xytext=(5, 5), textcoords="offset points", fontsize=7, color=color,
                 )
                 ax.plot([r.xi_printed], [r.bn_nominal_hz * dt], "v", color=color, ms=6)
-        for bn in (2, 10, 20):
+        for bn in sorted(set(mk["bn_nominal_hz"])):
             ax.axhline(bn * dt, color="0.6", lw=0.6, ls=":")
         ax.set_xlabel("ξ (smoothing factor)")
         ax.set_ylabel("B_n·T (one-sided ENBW × sample interval)")
@@ -149,3 +154,106 @@ def huang_track_figure(track: pd.DataFrame, panels: list, title: str = "", noisy
         if title:
             fig.suptitle(title, fontsize=9)
     return fig
+
+
+def huang_figures(tables: dict, published: pd.DataFrame, cfg: dict) -> dict:
+    """Every figure of the report (seed 002, Figs 2-7), from the study's tables.
+
+    Parameters
+    ----------
+    tables : dict
+        ``bandwidth_curves``, ``tables12``, ``thermal``, ``track``, ``track_metrics``
+        (``results/huang/*.csv``).
+    published : DataFrame
+        The transcription (:func:`abglib.reporting.compare.read_published`): the stated
+        ENBW limit of Fig 4 is drawn from it.
+    cfg : dict
+        The ``huang`` config section.
+
+    Returns
+    -------
+    dict
+        ``{"fig2": Figure, ..., "fig7": Figure}``.
+    """
+    from .printed import bandwidth_for_sigma, steady_state_lag_huang
+
+    radar, sim = cfg["radar"], cfg["simulation"]
+    dt = 1.0 / radar["fr_hz"]
+    out = {}
+    for rule, name, roman in (("type1", "fig2", "I"), ("type2", "fig3", "II")):
+        title = (
+            f"Replicates seed 002, Fig {name[-1]}: relation of B_n·T and ξ (type {roman} "
+            "parameters selecting), α-β and α-β-γ"
+        )
+        out[name] = huang_bandwidth_figure(
+            tables["bandwidth_curves"], rule, tables["tables12"], dt, title
+        )
+
+    budget = cfg["sigma_budget_m"]
+    stated = float(published.set_index("key").loc["fig4.enbw_limit", "published"])
+    args = (radar["fr_hz"], radar["tau_s"], radar["snr_db"], radar["k"])
+    limits = {
+        f"paper: 'ENBW should be under {stated:g}Hz'": stated,
+        f"printed formula, σ = {budget:g} m": bandwidth_for_sigma(budget, *args),
+        f"Barton form, σ = {budget:g} m": bandwidth_for_sigma(budget, *args, form="barton"),
+    }
+    title = (
+        "Replicates seed 002, Fig 4: thermal-noise range error against ENBW\n"
+        f"(F_r = {radar['fr_hz']:g} Hz, τ = {radar['tau_s'] * 1e6:g} µs, "
+        f"(S/N)₀ = {radar['snr_db']:g} dB, k = {radar['k']:g})"
+    )
+    out["fig4"] = huang_thermal_figure(tables["thermal"], budget, limits, title)
+
+    trk, m = tables["track"], tables["track_metrics"].set_index("tracker")
+    accel, gate = cfg["target"]["accel"], float(m["gate_m"].iloc[0])
+
+    def lag(name):
+        return steady_state_lag_huang(m.loc[name, "beta"], accel, dt)
+
+    def gains(name):
+        r = m.loc[name]
+        g = f", {r['gamma_h']:.3g}" if r["gamma_h"] else ""
+        return f"({r['alpha']:.3g}, {r['beta']:.3g}{g}), ENBW {r['enbw_hz']:.3g} Hz"
+
+    f5, lo = f"{sim['fig5_enbw_hz']:g}", f"{sim['low_enbw_hz']:g}"
+    ab5, abg5p, ab2 = f"ab_t2_{f5}_printed", f"abg_t2_{f5}_printed", f"ab_t2_{lo}_printed"
+    panels = [
+        (
+            f"type II, ENBW {f5} Hz: α-β (printed gains) vs α-β-γ (gains of a true {f5} Hz)",
+            [(ab5, f"α-β printed {gains(ab5)}"), (f"abg_t2_{f5}", f"α-β-γ type II, true {f5} Hz")],
+            [(lag(ab5), f"A/(βF_r²) = {lag(ab5):.2f} m")],
+        ),
+        (
+            f"type II α-β-γ with the gains printed for {f5} Hz: their true ENBW is "
+            f"{m.loc[abg5p, 'enbw_hz']:.0f} Hz",
+            [(abg5p, f"α-β-γ printed {gains(abg5p)}")],
+        ),
+        (
+            f"type II, ENBW {lo} Hz: the initial error of α-β",
+            [(ab2, f"α-β printed {gains(ab2)}"), (f"abg_t2_{lo}", f"α-β-γ type II, true {lo} Hz")],
+            [
+                (lag(ab2), f"A/(βF_r²) = {lag(ab2):.1f} m"),
+                (gate, f"assumed discriminator edge {gate:.1f} m"),
+            ],
+        ),
+    ]
+    title = (
+        f"Replicates seed 002, Fig 5: performances of tracking loops (A = {accel:g} m/s², "
+        f"B = {cfg['target']['jerk']:g} m/s³, thin: with thermal noise)"
+    )
+    out["fig5"] = huang_track_figure(trk, panels, title)
+    for rule, name in (("1", "fig6"), ("2", "fig7")):
+        roman = "I" * int(rule)
+        panels = [
+            (
+                f"type {roman} α-β-γ, true ENBW {bn:g} Hz",
+                [(f"abg_t{rule}_{bn:g}", f"type {roman}, {bn:g} Hz")],
+            )
+            for bn in sim["residual_enbw_hz"]
+        ]
+        title = (
+            f"Replicates seed 002, Fig {name[-1]}: tracking position residual error "
+            f"(type {roman} parameters selecting), thin: with thermal noise"
+        )
+        out[name] = huang_track_figure(trk, panels, title)
+    return out

@@ -1,550 +1,307 @@
-r"""Huang, Yang and Ma, "Research on fixed-gain range tracking loop" (seed 002).
+r"""The study of Huang, Yang and Ma (seed 002): every table its claims and report read.
 
-The science specific to this paper; everything general (gains, ENBW routes, stability,
-lags) is in :mod:`abglib.design`, :mod:`abglib.analysis` and :mod:`abglib.conventions`.
-Huang et al. write the acceleration gain as ``gamma_H = gamma / 2`` (their eqs 1, 3-4);
-every function taking ``*_h`` gains takes them in that convention and converts through
-:func:`abglib.conventions.from_huang`.
-
-``C_LIGHT``                   speed of light (m/s)
-``thermal_sigma``             the paper's thermal-noise range error (printed, or Barton's form)
-``bandwidth_for_sigma``       its inverse: the ENBW at which the error reaches a given sigma
-``measurement_sigma``         the per-pulse range noise that makes the printed formula exact
-``enbw_huang_eq13_as_printed``  eq 13 read literally (no reconstruction), in Hz
-``enbw_eq8_two_sided``        the first form of eq 8 as printed (whole band), by quadrature
-``run_eqs_1_2``               the loop of eqs 1-2, transcribed literally (with the T^2/2 choice)
-``bandwidth_curves``          ``B_n T`` against ``xi`` (Figures 2-3), exact and closed forms
-``enbw_monte_carlo``          ENBW estimated from a noise-driven loop (seeded), with its SE
-``table_row``                 one cell of Tables 1-2: what the printed gains really are
-``simulate_range_track``      the range-track simulation of Figures 5-7 (seeded)
-``error_metrics``             lag, initial error, peak, settling and overshoot of a run
+:class:`HuangStudy` builds, lazily and from the ``huang`` config section and the printed
+Tables 1-2 (``data/published/huang``): the ``B_n T`` curves of Figures 2-3, the thermal
+error of Figure 4, Tables 1-2 cell by cell with every ENBW route, and the simulated range
+track of Figures 5-7 with its summary. Each piece is a
+:func:`functools.cached_property`, so a claim re-judged at another value of an assumed
+input (the range gate, how the loop is started, the noise level, the settling band)
+recomputes only what it reads.
 """
 
 from __future__ import annotations
 
+from functools import cached_property
+
 import numpy as np
 import pandas as pd
 
-from ..._checks import AbglibValueError, check_finite, check_positive, scalar_or_array
-from ...analysis import (
-    enbw,
-    enbw_huang_eq8_13,
-    enbw_huang_eq14,
-    is_stable,
-    pole_radius,
-    stable_huang_eq5,
-    stable_jury_steelman,
-)
-from ...analysis._enbw import _huang_k
+from ..._checks import AbglibValueError
+from ...analysis import enbw, enbw_numeric, is_stable, pole_radius
 from ...conventions import from_huang, to_huang
-from ...design import huang_for_enbw, huang_type1, huang_type2
-from ...engine import track
+from ...design import huang_for_enbw
 from ...gains import Gains
-from ...simulate import polynomial_track, sample_times, white_noise
+from ...simulate import white_noise
+from .._claims import Study
+from .enbw_tables import bandwidth_curves, enbw_monte_carlo, table_row
+from .printed import (
+    C_LIGHT,
+    enbw_eq8_two_sided,
+    enbw_huang_eq8_13,
+    enbw_huang_eq13_as_printed,
+    enbw_huang_eq14,
+    thermal_sigma,
+)
+from .simulation import error_metrics, simulate_range_track
 
-__all__ = [
-    "C_LIGHT",
-    "RULES",
-    "bandwidth_curves",
-    "bandwidth_for_sigma",
-    "enbw_eq8_two_sided",
-    "enbw_huang_eq13_as_printed",
-    "enbw_monte_carlo",
-    "error_metrics",
-    "measurement_sigma",
-    "run_eqs_1_2",
-    "simulate_range_track",
-    "table_row",
-    "thermal_sigma",
-]
+__all__ = ["NOISE", "TABLE_CELLS", "HuangStudy"]
 
-#: Speed of light in vacuum, m/s (the paper's "c is light velocity").
-C_LIGHT = 299_792_458.0
-#: The paper's two gain-selection rules (seed 002, "Loop parameters selecting").
-RULES = {"type1": huang_type1, "type2": huang_type2}
-_FORMS = ("printed", "barton")
-
-
-def _snr(snr_db):
-    return 10.0 ** (check_finite("snr_db", snr_db) / 10.0)
+#: Tables 1-2: (table, rule) and (column, order) of every cell; rows 2, 10, 20 Hz.
+TABLE_CELLS = {
+    "tables": {"t1": "type1", "t2": "type2"},
+    "columns": {"ab": 2, "abg": 3},
+}
+#: Measurement-noise levels of the simulation (the paper: "the Gauss noise is added"):
+#: ``barton``, the per-pulse error for which the printed thermal formula is exactly the
+#: loop's output error (:func:`.printed.measurement_sigma`); ``printed_single_pulse``, the
+#: printed formula for one pulse (``F_r / B_n = 1``), sqrt 2 larger.
+NOISE = ("barton", "printed_single_pulse")
 
 
-def thermal_sigma(bn_hz, fr_hz, tau_s, snr_db, k=1.4, form="printed"):
-    r"""Thermal-noise range tracking error in metres (seed 002, "Tracking errors").
+class HuangStudy(Study):
+    """Seed 002 from the ``huang`` config section and the printed Tables 1-2."""
 
-    Parameters
-    ----------
-    bn_hz : float or array (...)
-        Equivalent noise bandwidth ``B_n`` of the range loop, Hz, > 0.
-    fr_hz : float
-        Pulse repetition (sampling) frequency ``F_r = 1/T``, Hz.
-    tau_s : float
-        Pulse width ``tau``, s.
-    snr_db : float
-        Single-pulse signal-to-noise ratio ``(S/N)_0`` in dB (power ratio).
-    k : float, default 1.4
-        Normalised slope of the range discriminator.
-    form : {"printed", "barton"}, default "printed"
-        ``"printed"``: the paper's formula; ``"barton"``: the same with the
-        ``2E/N_0`` of Barton's range-error formula (a factor ``sqrt 2`` smaller).
+    doc = "huang"
 
-    Returns
-    -------
-    float or array (...)
-        ``sigma`` in m.
+    # ------------------------------------------------------------------ inputs
+    @cached_property
+    def radar(self) -> dict:
+        return dict(self.cfg["radar"])
 
-    Notes
-    -----
-    Seed 002 (unnumbered, section "Tracking errors"):
+    @cached_property
+    def dt(self) -> float:
+        """``T = 1 / F_r`` (s)."""
+        return 1.0 / float(self.radar["fr_hz"])
 
-    .. math:: \sigma = \frac{\tau c}{2k\sqrt{(S/N)_0\,(F_r/B_n)}},
+    @cached_property
+    def gate_m(self) -> float:
+        """Half-width of the range discriminator's linear region (m): ``c tau / 2`` times
+        ``gate_fraction_of_pulse`` (assumed: the paper gives no gate)."""
+        fraction = float(self.cfg["gate_fraction_of_pulse"])
+        return C_LIGHT * float(self.radar["tau_s"]) / 2.0 * fraction
 
-    the range extent of the pulse ``tau c / 2`` over the discriminator slope and the
-    square root of the signal-to-noise ratio integrated over ``F_r / B_n`` pulses.
-    Barton's form writes ``2 E/N_0 = 2 (S/N)_0 F_r / B_n`` under the root; it is the
-    printed formula with ``B_n`` replaced by ``B_n / 2``, i.e. the printed formula
-    evaluated at the *two-sided* bandwidth of eq 8.
-    """
-    if form not in _FORMS:
-        raise AbglibValueError(f"form must be one of {', '.join(map(repr, _FORMS))}, got {form!r}")
-    bn = check_positive("bn_hz", bn_hz)
-    fr = check_positive("fr_hz", fr_hz)
-    tau = check_positive("tau_s", tau_s)
-    kk = check_positive("k", k)
-    factor = 1.0 if form == "printed" else 2.0
-    return scalar_or_array(tau * C_LIGHT / (2.0 * kk * np.sqrt(factor * _snr(snr_db) * fr / bn)))
+    def thermal(self, bn_hz, form="printed"):
+        """:func:`.printed.thermal_sigma` at the configured radar (m)."""
+        r = self.radar
+        return thermal_sigma(bn_hz, r["fr_hz"], r["tau_s"], r["snr_db"], r["k"], form=form)
 
+    @cached_property
+    def sigma_m(self) -> float:
+        """Standard deviation of the simulated per-pulse range noise (m)."""
+        noise = self.cfg["simulation"]["noise"]
+        if noise not in NOISE:
+            raise AbglibValueError(f"huang.simulation.noise must be one of {NOISE}, got {noise!r}")
+        fr = float(self.radar["fr_hz"])
+        return float(self.thermal(fr, "barton" if noise == "barton" else "printed"))
 
-def bandwidth_for_sigma(sigma_m, fr_hz, tau_s, snr_db, k=1.4, form="printed"):
-    r"""The ENBW (Hz) at which :func:`thermal_sigma` equals ``sigma_m``.
+    # ------------------------------------------------------------------ Tables 1-2
+    def printed_value(self, key: str) -> float:
+        """A printed number of the transcription, as a float."""
+        return float(self.printed(key))
 
-    Notes
-    -----
-    Inverting the formula of :func:`thermal_sigma`:
-    :math:`B_n = f\,(S/N)_0 F_r\,(2k\sigma/(\tau c))^2`, ``f = 1`` (printed) or 2 (Barton).
-    The error grows with ``B_n``, so ``sigma <= sigma_m`` needs ``B_n <=`` this value
-    (seed 002, "Assuming the sigma <= 7m, the ENBW should be under 40Hz").
-    """
-    if form not in _FORMS:
-        raise AbglibValueError(f"form must be one of {', '.join(map(repr, _FORMS))}, got {form!r}")
-    s = check_positive("sigma_m", sigma_m)
-    fr = check_positive("fr_hz", fr_hz)
-    tau = check_positive("tau_s", tau_s)
-    kk = check_positive("k", k)
-    factor = 1.0 if form == "printed" else 2.0
-    return scalar_or_array(factor * _snr(snr_db) * fr * (2.0 * kk * s / (tau * C_LIGHT)) ** 2)
+    def cell(self, base: str) -> dict:
+        """One printed cell of Tables 1-2 (``'t2.abg.10hz'``): rule, order and the printed
+        ENBW, gains (Huang's convention) and xi."""
+        table, col, _ = base.split(".")
+        order = TABLE_CELLS["columns"][col]
+        return {
+            "base": base,
+            "rule": TABLE_CELLS["tables"][table],
+            "order": order,
+            "bn_hz": self.printed_value(f"{base}.enbw"),
+            "alpha_h": self.printed_value(f"{base}.alpha"),
+            "beta_h": self.printed_value(f"{base}.beta"),
+            "gamma_h": self.printed_value(f"{base}.gamma") if order == 3 else 0.0,
+            "xi": self.printed_value(f"{base}.xi"),
+        }
 
+    def printed_gains(self, base: str) -> Gains:
+        """The printed gains of one cell, converted to the canonical convention."""
+        c = self.cell(base)
+        return from_huang(c["alpha_h"], c["beta_h"], c["gamma_h"])
 
-def measurement_sigma(tau_s, snr_db, k=1.4):
-    r"""Per-pulse range noise (m) for which the printed thermal error is exact.
-
-    Returns
-    -------
-    float
-        :math:`\sigma_m = \tau c / (2k\sqrt{2 (S/N)_0})` (Barton's single-pulse error).
-
-    Notes
-    -----
-    White measurement noise of standard deviation ``sigma_m`` leaves a predicted-position
-    error of variance :math:`\sigma_m^2\,\mathrm{VRF}_{x_p} = \sigma_m^2\, 2 B_n T`
-    (:func:`abglib.analysis.enbw`, one-sided). With this ``sigma_m`` that is exactly
-    :func:`thermal_sigma` ``(B_n, 1/T, ...)`` as printed: the printed formula is the
-    single-pulse error of Barton's ``2E/N_0`` form smoothed by a loop of one-sided
-    bandwidth ``B_n``.
-    """
-    return thermal_sigma(0.5, 1.0, tau_s, snr_db, k, form="printed")
-
-
-# --------------------------------------------------------------------------- eq 13
-def enbw_huang_eq13_as_printed(alpha_h, beta_h, gamma_h, dt):
-    r"""Seed 002, eq 13 read literally, in Hz (no reconstruction).
-
-    Parameters
-    ----------
-    alpha_h, beta_h, gamma_h : float
-        Gains in Huang's convention (``gamma_h > 0``).
-    dt : float
-        Sample interval ``T`` > 0.
-
-    Returns
-    -------
-    float
-        :math:`B_n = \frac{1}{2TK_5}\,\frac{K_0\sqrt{K_2}\,b + K_1\sqrt{K_2} + K_2 a}{c}`
-        with :math:`b^2 = K_4 + 2\alpha\sqrt{K_2}`, :math:`a^2 = K_3 + 2b`,
-        :math:`ab = \sqrt{K_2} + c` exactly as printed (``alpha`` the gain, ``K_2``
-        the denominator constant of eqs 11-12) and ``K0..K5`` of eq 11.
-
-    Notes
-    -----
-    The correct result is :func:`abglib.analysis.enbw_huang_eq8_13` (three corrections:
-    the constant ``K2/K5``, the Hurwitz coefficient ``a`` in place of the gain ``alpha``
-    under ``b^2``, and ``c`` multiplied by ``sqrt K2``). Read literally, the printed
-    formula gives values of the order of the paper's nominal bandwidths for the printed
-    type II alpha-beta-gamma gains, where the exact ENBW is 100-340 Hz.
-    """
-    a, b, g = (
-        float(check_finite(n, v))
-        for n, v in (("alpha_h", alpha_h), ("beta_h", beta_h), ("gamma_h", gamma_h))
-    )
-    T = float(check_positive("dt", dt))
-    if g <= 0.0:
-        raise AbglibValueError(f"gamma_h must be > 0 (eq 13 is for alpha-beta-gamma), got {g!r}")
-    K0, K1, K2, K3, K4, K5 = _huang_k(a, b, g)
-    s = np.sqrt(K2)
-    b2 = K4 + 2.0 * a * s
-    if b2 <= 0.0:
-        raise AbglibValueError(f"eq 13 as printed has no real b for gains ({a}, {b}, {g})")
-    bb = np.sqrt(b2)
-    a2 = K3 + 2.0 * bb
-    if a2 <= 0.0:
-        raise AbglibValueError(f"eq 13 as printed has no real a for gains ({a}, {b}, {g})")
-    aa = np.sqrt(a2)
-    c = aa * bb - s
-    return float((K0 * s * bb + K1 * s + K2 * aa) / c / (2.0 * T * K5))
-
-
-def enbw_eq8_two_sided(gains: Gains, dt=1.0) -> float:
-    r"""The first form of seed 002, eq 8 as printed, in Hz: the whole-band integral.
-
-    Parameters
-    ----------
-    gains : Gains
-        Canonical gains (scalar), stable.
-    dt : float, default 1.0
-        Sample interval ``T`` > 0.
-
-    Returns
-    -------
-    float
-        :math:`\frac{1}{2\pi}\int_{-\pi/T}^{\pi/T}|H(e^{j\omega T})|^2\,d\omega`
-        (``H = X_p/X``; the printed infinite limits are the Nyquist band of a sampled
-        loop), by adaptive quadrature of :func:`abglib.analysis.frequency_response`.
-
-    Notes
-    -----
-    ``|H|^2`` is even in ``omega``, so this is twice the one-sided
-    :func:`abglib.analysis.enbw` of eqs 9-14: eq 8 as printed is the two-sided
-    bandwidth.
-    """
-    import scipy.integrate
-
-    from ...analysis import frequency_response, require_stable
-
-    require_stable(gains, "noise bandwidth is unbounded")
-    T = float(check_positive("dt", dt))
-
-    def f(x):
-        return float(np.abs(frequency_response(gains, "x_pred", np.asarray(x))) ** 2)
-
-    edges = np.concatenate([-np.geomspace(np.pi, 1e-5, 30), [0.0], np.geomspace(1e-5, np.pi, 30)])
-    total = sum(
-        scipy.integrate.quad(f, lo, hi, limit=200, epsrel=1e-11, epsabs=0.0)[0]
-        for lo, hi in zip(edges[:-1], edges[1:], strict=True)
-    )
-    return total / (2.0 * np.pi * T)
-
-
-def run_eqs_1_2(z, alpha_h, beta_h, gamma_h, dt, half=True) -> np.ndarray:
-    r"""The loop of seed 002, eqs 1-2, transcribed literally; returns ``R_p`` (array (n,)).
-
-    Parameters
-    ----------
-    z : array (n,)
-        Measured ranges ``R_m(kT)``.
-    alpha_h, beta_h, gamma_h : float
-        Gains in Huang's convention.
-    dt : float
-        ``T``.
-    half : bool, default True
-        True: predict with ``T^2 R''_s / 2`` (what eqs 3-4 assume); False: with
-        ``T^2 R''_s`` exactly as eq 2 prints it.
-
-    Notes
-    -----
-    Eq 1: ``R_s = R_p + alpha r``, ``R'_s = R'_p + (beta/T) r``,
-    ``R''_s = R''_p + (2 gamma_H / T^2) r``, ``r = R_m - R_p``. Eq 2:
-    ``R_p = R_s + T R'_s + c T^2 R''_s`` (``c = 1/2`` or 1), ``R'_p = R'_s + T R''_s``
-    (eq 2 prints ``T R'_s``, a dimensional slip), ``R''_p = R''_s``. State zero before
-    the first sample.
-    """
-    z = check_finite("z", z)
-    T = float(check_positive("dt", dt))
-    c = 0.5 if half else 1.0
-    rs = vs = as_ = 0.0
-    out = np.empty(z.shape)
-    for k, zk in enumerate(z):
-        rp = rs + T * vs + c * T * T * as_
-        vp = vs + T * as_
-        ap = as_
-        out[k] = rp
-        r = zk - rp
-        rs = rp + alpha_h * r
-        vs = vp + beta_h / T * r
-        as_ = ap + 2.0 * gamma_h / (T * T) * r
-    return out
-
-
-# --------------------------------------------------------------------------- Figs 2-3
-def bandwidth_curves(xi, dt=1.0) -> pd.DataFrame:
-    r"""``B_n T`` against ``xi`` for both rules and both trackers (seed 002, Figs 2-3).
-
-    Parameters
-    ----------
-    xi : array (m,)
-        Grid of the smoothing factor, inside ``0 < xi < 1``.
-    dt : float, default 1.0
-        Sample interval (``B_n T`` does not depend on it).
-
-    Returns
-    -------
-    DataFrame
-        Long table, columns ``rule, order, xi, alpha, beta, gamma_h, bnT_exact``
-        (:func:`abglib.analysis.enbw`, Lyapunov), ``bnT_closed`` (eq 14 for alpha-beta;
-        the reconstructed eqs 8-13 for alpha-beta-gamma) and ``bnT_eq13_printed``
-        (alpha-beta-gamma only, :func:`enbw_huang_eq13_as_printed`).
-    """
-    x = check_finite("xi", xi).ravel()
-    T = float(check_positive("dt", dt))
-    rows = []
-    for rule, fn in RULES.items():
-        for order in (2, 3):
-            g = fn(x, order)
-            ah, bh, gh = (np.broadcast_to(v, x.shape) for v in to_huang(g))
-            exact = np.asarray(enbw(g, T)) * T
-            if order == 2:
-                closed = np.asarray(enbw_huang_eq14(ah, bh, T)) * T
-                literal = np.full(x.shape, np.nan)
-            else:
-                closed = np.asarray(enbw_huang_eq8_13(ah, bh, gh, T)) * T
-                literal = np.array(
-                    [enbw_huang_eq13_as_printed(*v, T) * T for v in zip(ah, bh, gh, strict=True)]
+    @cached_property
+    def cells(self) -> list[dict]:
+        """Every cell of Tables 1-2 that the transcription holds, in table order."""
+        keys = set(self.published["key"])
+        out = []
+        for table in TABLE_CELLS["tables"]:
+            for col in TABLE_CELLS["columns"]:
+                bases = sorted(
+                    {k.rsplit(".", 1)[0] for k in keys if k.startswith(f"{table}.{col}.")},
+                    key=lambda b: float(b.split(".")[2].removesuffix("hz")),
                 )
-            rows.append(
-                pd.DataFrame(
-                    {
-                        "rule": rule,
-                        "order": order,
-                        "xi": x,
-                        "alpha": ah,
-                        "beta": bh,
-                        "gamma_h": gh,
-                        "bnT_exact": exact,
-                        "bnT_closed": closed,
-                        "bnT_eq13_printed": literal,
-                    }
+                out.extend(self.cell(b) for b in bases)
+        return out
+
+    @cached_property
+    def table_rows(self) -> pd.DataFrame:
+        """Tables 1-2 cell by cell (:func:`.enbw_tables.table_row`), indexed by cell,
+        with the ENBW of an unstable set read with the canonical gamma (no factor 2)."""
+        rows = []
+        for c in self.cells:
+            row = {"cell": c["base"]}
+            row.update(
+                table_row(
+                    c["rule"], c["order"], c["bn_hz"], c["alpha_h"], c["beta_h"],
+                    c["gamma_h"], c["xi"], self.dt,
                 )
+            )  # fmt: skip
+            alt = Gains(c["alpha_h"], c["beta_h"], c["gamma_h"])
+            row["enbw_if_gamma_canonical"] = (
+                float(enbw(alt, self.dt)) if not row["stable_jury"] and is_stable(alt) else np.nan
             )
-    return pd.concat(rows, ignore_index=True)
+            rows.append(row)
+        return pd.DataFrame(rows).set_index("cell", drop=False)
 
+    @cached_property
+    def tables12(self) -> pd.DataFrame:
+        """:attr:`table_rows` plus a Monte Carlo ENBW of every stable printed set."""
+        mc = self.cfg["monte_carlo"]
+        out = self.table_rows.copy()
+        est, se = [], []
+        for i, c in enumerate(self.cells):
+            if out.loc[c["base"], "stable_jury"]:
+                e, s = enbw_monte_carlo(
+                    self.printed_gains(c["base"]), self.dt, mc["runs"], mc["samples"],
+                    mc["burn_in"], int(mc["seed"]) + i,
+                )  # fmt: skip
+            else:
+                e = s = np.nan
+            est.append(e)
+            se.append(s)
+        out["enbw_mc"] = est
+        out["enbw_mc_se"] = se
+        return out.reset_index(drop=True)
 
-def enbw_monte_carlo(gains: Gains, dt, runs, samples, burn_in, seed) -> tuple:
-    r"""One-sided ENBW (Hz) estimated by driving the loop with unit white noise.
+    @cached_property
+    def routes(self) -> pd.DataFrame:
+        """ENBW (Hz) of the printed (stable) and nominal gains of every cell, by every
+        independent route (Lyapunov, quadrature, impulse sum, eq 8 as printed, the closed
+        forms: eq 14, eq 13 reconstructed and as printed, eqs 11-12)."""
+        rows = []
+        for c in self.cells:
+            sets = {"printed": (c["alpha_h"], c["beta_h"], c["gamma_h"])}
+            sets["nominal"] = to_huang(huang_for_enbw(c["bn_hz"], self.dt, c["rule"], c["order"]))
+            for which, (a, b, gh) in sets.items():
+                g = from_huang(a, b, gh)
+                if not is_stable(g):
+                    continue
+                row = {"cell": c["base"], "gains": which, "alpha": a, "beta": b, "gamma_h": gh}
+                row["exact_lyapunov"] = float(enbw(g, self.dt))
+                row["numeric_integral"] = float(enbw_numeric(g, self.dt, "integral"))
+                row["impulse_sum"] = float(enbw_numeric(g, self.dt, "impulse"))
+                row["eq8_two_sided"] = float(enbw_eq8_two_sided(g, self.dt))
+                row["eq14"] = np.nan
+                row["eq13_reconstructed"] = row["eq13_as_printed"] = np.nan
+                row["eq11_12_reconstructed"] = np.nan
+                if c["order"] == 2:
+                    row["eq14"] = float(enbw_huang_eq14(a, b, self.dt))
+                else:
+                    row["eq13_reconstructed"] = float(enbw_huang_eq8_13(a, b, gh, self.dt))
+                    row["eq13_as_printed"] = enbw_huang_eq13_as_printed(a, b, gh, self.dt)
+                    try:
+                        row["eq11_12_reconstructed"] = float(
+                            enbw_huang_eq8_13(a, b, gh, self.dt, method="eq11_12")
+                        )
+                    except ValueError:
+                        pass
+                rows.append(row)
+        return pd.DataFrame(rows)
 
-    Parameters
-    ----------
-    gains : Gains
-        Canonical gains (scalar), stable.
-    dt : float
-        ``T`` > 0.
-    runs, samples, burn_in : int
-        Independent runs, samples kept per run, and leading samples dropped (the
-        zero-state transient).
-    seed : int
+    # ------------------------------------------------------------------ Figs 2-4
+    @cached_property
+    def curves(self) -> pd.DataFrame:
+        """``B_n T`` against ``xi`` (Figures 2-3) on the configured grid."""
+        g = self.cfg["xi_grid"]
+        return bandwidth_curves(np.linspace(g["start"], g["stop"], g["n"]), self.dt)
 
-    Returns
-    -------
-    (float, float)
-        The estimate :math:`\widehat{\mathrm{VRF}}_{x_p}/(2T)` and its standard error
-        (from the spread of the per-run variances).
-    """
-    from ...analysis import require_stable
+    @cached_property
+    def thermal_table(self) -> pd.DataFrame:
+        """Thermal-noise error against ENBW (Figure 4), printed and Barton's form."""
+        e = self.cfg["enbw_grid_hz"]
+        bn = np.geomspace(e["start"], e["stop"], e["n"])
+        return pd.DataFrame(
+            {
+                "enbw_hz": bn,
+                "sigma_printed_m": self.thermal(bn),
+                "sigma_barton_m": self.thermal(bn, "barton"),
+            }
+        )
 
-    require_stable(gains, "noise bandwidth is unbounded")
-    T = float(check_positive("dt", dt))
-    z = white_noise((int(runs), int(burn_in) + int(samples)), 1.0, seed)
-    xp = track(z, gains, dt=T, outputs=("x_pred",)).x_pred[:, int(burn_in) :]
-    per_run = np.mean(xp**2, axis=1)
-    est = float(np.mean(per_run)) / (2.0 * T)
-    se = float(np.std(per_run, ddof=1) / np.sqrt(len(per_run))) / (2.0 * T)
-    return est, se
+    # ------------------------------------------------------------------ Figs 5-7
+    @cached_property
+    def trackers(self) -> dict:
+        """The loops of Figures 5-7 (canonical gains), named as in ``track.csv``.
 
+        Fig 5 (type II, ``fig5_enbw_hz``): the alpha-beta gains as printed, the
+        alpha-beta-gamma ones as printed and at a true ``fig5_enbw_hz``; the 2 Hz sentence
+        (``low_enbw_hz``): alpha-beta as printed, alpha-beta-gamma at a true 2 Hz; Figs 6-7:
+        both rules at the true ``residual_enbw_hz``.
+        """
+        sim = self.cfg["simulation"]
+        f5, lo = sim["fig5_enbw_hz"], sim["low_enbw_hz"]
+        out = {
+            f"ab_t2_{f5:g}_printed": self.printed_gains(f"t2.ab.{f5:g}hz"),
+            f"abg_t2_{f5:g}_printed": self.printed_gains(f"t2.abg.{f5:g}hz"),
+            f"abg_t2_{f5:g}": huang_for_enbw(f5, self.dt, "type2", 3),
+            f"ab_t2_{lo:g}_printed": self.printed_gains(f"t2.ab.{lo:g}hz"),
+            f"abg_t2_{lo:g}": huang_for_enbw(lo, self.dt, "type2", 3),
+        }
+        for rule in ("type1", "type2"):
+            for bn in sim["residual_enbw_hz"]:
+                out[f"abg_t{rule[-1]}_{bn:g}"] = huang_for_enbw(bn, self.dt, rule, 3)
+        return out
 
-# --------------------------------------------------------------------------- Tables 1-2
-def _xi_of(gains: Gains, rule: str, order: int) -> float:
-    """The ``xi`` of a gain set on one of the rules' curves (its alpha)."""
-    a = float(gains.alpha)
-    if rule == "type1":
-        return a
-    return (1.0 - a) ** 0.5 if order == 2 else (1.0 - a) ** (1.0 / 3.0)
+    @cached_property
+    def track(self) -> pd.DataFrame:
+        """The simulated range track of every loop of :attr:`trackers` (seeded)."""
+        sim, tgt = self.cfg["simulation"], self.cfg["target"]
+        n = int(round(sim["duration_s"] / self.dt))
+        return simulate_range_track(
+            self.trackers, self.dt, n, tgt["accel"], tgt["jerk"], self.sigma_m,
+            int(sim["seed"]), tgt["r0"], tgt["v0"], start=sim["start"],
+        )  # fmt: skip
 
+    @cached_property
+    def metrics(self) -> pd.DataFrame:
+        """Summary of every run (:func:`.simulation.error_metrics`), indexed by tracker,
+        with ``lost`` against the assumed gate :attr:`gate_m`."""
+        rows = []
+        frac = self.cfg["simulation"]["settle_fraction"]
+        for name, g in self.trackers.items():
+            m = error_metrics(
+                self.track["t"], self.track[f"lag_{name}"], self.track[f"err_{name}"],
+                self.gate_m, frac,
+            )  # fmt: skip
+            a, b, gh = to_huang(g)
+            rows.append(
+                {
+                    "tracker": name,
+                    "sigma_measurement_m": self.sigma_m,
+                    "gate_m": self.gate_m,
+                    "alpha": a,
+                    "beta": b,
+                    "gamma_h": gh,
+                    "enbw_hz": float(enbw(g, self.dt)),
+                    "pole_radius": float(pole_radius(g)),
+                    **m,
+                }
+            )
+        return pd.DataFrame(rows).set_index("tracker", drop=False)
 
-def table_row(rule, order, bn_hz, alpha_h, beta_h, gamma_h, xi, dt) -> dict:
-    r"""One cell of seed 002, Tables 1-2: the printed gains against the rule and the ENBW.
+    # ------------------------------------------------------------------ checks
+    @cached_property
+    def random_checks(self) -> tuple:
+        """Seeded inputs of the eq 2-6 checks (``checks_seed``): a unit white-noise input
+        (64 samples) and 50 random stable gain sets (Huang's convention)."""
+        rng = np.random.default_rng(int(self.cfg["checks_seed"]))
+        z = white_noise(64, 1.0, rng)
+        sets = []
+        for _ in range(50):
+            a = rng.uniform(0.05, 0.95)
+            b = rng.uniform(0.01, 0.5) * a
+            gh = rng.uniform(0.0, 0.5) * a * b / 2  # inside Jury's alpha beta > gamma (2 - alpha)
+            sets.append((float(a), float(b), float(gh)))
+        return z, sets
 
-    Parameters
-    ----------
-    rule : {"type1", "type2"}
-        Table 1 (type I) or Table 2 (type II).
-    order : {2, 3}
-        Alpha-beta or alpha-beta-gamma column.
-    bn_hz : float
-        The row's nominal ENBW (2, 10 or 20 Hz).
-    alpha_h, beta_h, gamma_h, xi : float
-        The printed gains (Huang's convention; ``gamma_h = 0`` for alpha-beta) and ``xi``.
-    dt : float
-        ``T = 1/F_r``.
-
-    Returns
-    -------
-    dict
-        ``enbw_exact`` (Hz, ``inf`` when unstable), ``enbw_closed`` (eq 14 or the
-        reconstructed eqs 8-13; NaN when unstable), ``enbw_eq13_printed`` (literal eq 13),
-        ``stable_jury`` (exact), ``stable_eq5`` / ``stable_eq7`` (printed criteria),
-        ``jury_eq47`` (seed 000, eq 47 value), ``pole_radius``; the rule at the printed
-        ``xi`` (``rule_alpha``, ``rule_beta``, ``rule_gamma_h``, ``rule_enbw``) and the
-        rule at the nominal ENBW (``xi_nominal`` and ``nominal_alpha``, ``_beta``,
-        ``_gamma_h``).
-    """
-    if rule not in RULES:
-        raise AbglibValueError(f"rule must be one of {list(RULES)}, got {rule!r}")
-    g = from_huang(alpha_h, beta_h, gamma_h if order == 3 else 0.0)
-    stable = bool(is_stable(g))
-    out = {
-        "rule": rule,
-        "order": order,
-        "bn_nominal_hz": float(bn_hz),
-        "alpha_printed": float(alpha_h),
-        "beta_printed": float(beta_h),
-        "gamma_h_printed": float(gamma_h) if order == 3 else 0.0,
-        "xi_printed": float(xi),
-        "stable_jury": stable,
-        "stable_jury_steelman": bool(stable_jury_steelman(g)),
-        "jury_eq47": float(g.alpha * g.beta + g.alpha * g.gamma / 2 - g.gamma),
-        "pole_radius": float(pole_radius(g)),
-        "enbw_exact": float(enbw(g, dt)) if stable else np.inf,
-        "enbw_closed": np.nan,
-        "enbw_eq13_printed": np.nan,
-    }
-    if order == 3:
-        out["stable_eq5"] = bool(stable_huang_eq5(alpha_h, beta_h, gamma_h))
-        out["enbw_eq13_printed"] = enbw_huang_eq13_as_printed(alpha_h, beta_h, gamma_h, dt)
-        if stable:
-            out["enbw_closed"] = float(enbw_huang_eq8_13(alpha_h, beta_h, gamma_h, dt))
-    else:
-        out["stable_eq5"] = bool((alpha_h > -beta_h) & (beta_h > 0))  # eq 7
-        if stable:
-            out["enbw_closed"] = float(enbw_huang_eq14(alpha_h, beta_h, dt))
-    r = RULES[rule](xi, order)
-    ra, rb, rg = to_huang(r)
-    out.update(rule_alpha=ra, rule_beta=rb, rule_gamma_h=rg, rule_enbw=float(enbw(r, dt)))
-    n = huang_for_enbw(bn_hz, dt, rule, order)
-    na, nb, ng = to_huang(n)
-    out.update(
-        xi_nominal=_xi_of(n, rule, order),
-        nominal_alpha=na,
-        nominal_beta=nb,
-        nominal_gamma_h=ng,
-        nominal_enbw=float(enbw(n, dt)),
-    )
-    return out
-
-
-# --------------------------------------------------------------------------- simulation
-def simulate_range_track(
-    trackers: dict, dt, n, accel, jerk, sigma_m, seed, r0=0.0, v0=0.0
-) -> pd.DataFrame:
-    r"""Range track of seed 002's simulation: constant jerk, Gaussian noise, several loops.
-
-    Parameters
-    ----------
-    trackers : dict
-        ``{name: Gains}`` (canonical gains).
-    dt : float
-        ``T = 1/F_r`` (s).
-    n : int
-        Number of samples.
-    accel, jerk : float
-        Initial target acceleration ``A`` (m/s^2) and its rate ``B`` (m/s^3).
-    sigma_m : float
-        Standard deviation of the white Gaussian range noise per pulse (m).
-    seed : int
-        Seed of the noise (the same noise for every tracker).
-    r0, v0 : float
-        Initial range (m) and range rate (m/s).
-
-    Returns
-    -------
-    DataFrame
-        Columns ``t`` (s), ``truth`` (m), ``z`` (m) and, per tracker ``name``,
-        ``err_<name>`` = truth - predicted position with noise and ``lag_<name>`` the
-        same without noise (m).
-
-    Notes
-    -----
-    Truth :math:`R(t) = r_0 + v_0 t + A t^2/2 + B t^3/6` (seed 002: "the target's
-    acceleration is A, and the acceleration changing rate is B"). Each loop starts from
-    the true range and range rate and zero acceleration (an explicit initial state of
-    :func:`abglib.track`), so its transient is the response to the unknown acceleration.
-    The error is that of the predicted position, the output of the paper's ``H(z)``.
-    """
-    T = float(check_positive("dt", dt))
-    t = sample_times(int(n), T)
-    truth = polynomial_track(t, r0, v0, accel, jerk)
-    z = truth + white_noise(t.shape, sigma_m, seed)
-    # ``track``'s explicit init is the state one sample before t = 0, so that its first
-    # prediction is the true range r0 with the true rate v0
-    init = np.array([r0 - v0 * T, v0, 0.0])
-    out = {"t": t, "truth": truth, "z": z}
-    for name, g in trackers.items():
-        noisy = track(z, g, dt=T, init=init, outputs=("x_pred",)).x_pred
-        clean = track(truth, g, dt=T, init=init, outputs=("x_pred",)).x_pred
-        out[f"err_{name}"] = truth - noisy
-        out[f"lag_{name}"] = truth - clean
-    return pd.DataFrame(out)
-
-
-def error_metrics(t, lag, err, gate_m, settle_fraction=0.05) -> dict:
-    r"""Summary of one simulated run (see :func:`simulate_range_track`).
-
-    Parameters
-    ----------
-    t, lag, err : array (n,)
-        Time (s), noise-free error and noisy error (m) of one loop.
-    gate_m : float
-        Half-width of the range discriminator's linear region (m): a loop whose error
-        leaves it has lost the track.
-    settle_fraction : float, default 0.05
-        Settling band, a fraction of the peak noise-free error.
-
-    Returns
-    -------
-    dict
-        ``peak_lag`` (max ``|lag|``), ``overshoot`` (``max(0, -min(lag) / max(lag))``, how far
-        the error swings past zero relative to its peak), ``settle_s`` (last time the
-        noise-free error is outside the band around its final drift line),
-        ``lag_intercept`` (the settled noise-free error extrapolated linearly to
-        ``t = 0``: the lag the loop would have if it had followed the initial
-        acceleration from the start), ``lag_end`` (noise-free error at the end),
-        ``rms_settled`` (RMS of the noisy error over the second half), ``peak_err``
-        (max ``|err|``) and ``lost`` (``peak_err > gate_m``).
-    """
-    t = np.asarray(t, float)
-    lag = np.asarray(lag, float)
-    err = np.asarray(err, float)
-    half = len(t) // 2
-    slope, icpt = np.polyfit(t[half:], lag[half:], 1)
-    drift = icpt + slope * t
-    peak = float(np.max(np.abs(lag)))
-    outside = np.nonzero(np.abs(lag - drift) > settle_fraction * max(peak, 1e-300))[0]
-    top = float(np.max(lag))
-    return {
-        "peak_lag": peak,
-        "overshoot": max(0.0, float(-np.min(lag) / top)) if top > 0 else np.nan,
-        "settle_s": float(t[outside[-1]]) if outside.size else 0.0,
-        "lag_intercept": float(icpt),
-        "lag_slope": float(slope),
-        "lag_end": float(lag[-1]),
-        "rms_settled": float(np.sqrt(np.mean(err[half:] ** 2))),
-        "peak_err": float(np.max(np.abs(err))),
-        "lost": bool(np.max(np.abs(err)) > gate_m),
-    }
+    # ------------------------------------------------------------------ tables
+    def tables(self) -> dict[str, pd.DataFrame]:
+        return {
+            "bandwidth_curves": self.curves,
+            "thermal": self.thermal_table,
+            "tables12": self.tables12,
+            "enbw_routes": self.routes,
+            "track": self.track,
+            "track_metrics": self.metrics.reset_index(drop=True),
+        }

@@ -1,4 +1,4 @@
-"""Huang, Yang and Ma (seed 002): abglib.replications.huang against independent routes.
+"""Huang, Yang and Ma (seed 002): the study's building blocks against independent routes.
 
 ENBW: Lyapunov (abglib.analysis.enbw) vs eq 14 vs the reconstructed eqs 8-13 vs quadrature
 vs summed impulse response vs a noise-driven Monte Carlo, on the printed Tables 1-2 gains;
@@ -9,9 +9,7 @@ theorem and by simulation. Conventions round trips on the printed tables.
 
 from __future__ import annotations
 
-import importlib.util
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -20,22 +18,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from abglib import design, track
-from abglib.analysis import (
-    enbw,
+from abglib.analysis import enbw, enbw_numeric, is_stable, transfer_function, vrf
+from abglib.conventions import from_huang, to_huang
+from abglib.replications import huang
+from abglib.replications.huang.printed import (
     enbw_huang_eq8_13,
     enbw_huang_eq14,
-    enbw_numeric,
-    is_stable,
     steady_state_lag_huang,
-    transfer_function,
     transfer_function_huang,
-    vrf,
 )
-from abglib.conventions import from_huang, to_huang
-from abglib.replications.huang import study as huang
-from abglib.reporting.compare import build_comparison, read_published
 
-ROOT = Path(__file__).resolve().parents[1]
 T = 1.0 / 300.0  # seed 002: F_r = 300 Hz
 
 # Tables 1-2 as printed (Huang's convention, gamma_H = gamma / 2): (rule, order, B_n, a, b, g)
@@ -250,39 +242,7 @@ def test_bad_input_messages():
         huang.enbw_eq8_two_sided(from_huang(0.61, 0.28, 0.18), T)
 
 
-# --------------------------------------------------------------------------- comparison
-def _script():
-    path = ROOT / "workflow" / "scripts" / "huang.py"
-    spec = importlib.util.spec_from_file_location("huang_script", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-@pytest.fixture(scope="module")
-def tables_comparison():
-    mod = _script()
-    published = read_published([ROOT / "data" / "published" / "huang" / "tables.csv"])
-    cells = mod.printed_cells(published)
-    tab = mod.tables12(cells, T, {"runs": 2, "samples": 200, "burn_in": 10, "seed": 1})
-    rep, alts = mod.reproduced_tables(published, tab, {})
-    return build_comparison("huang", published, rep, alts).set_index("item")
-
-
-def test_tables_verdicts(tables_comparison):
-    c = tables_comparison
-    assert c.loc["Table 2, 10 Hz, alpha-beta, ENBW", "verdict"] == "match"
-    assert c.loc["Table 1, 10 Hz, alpha-beta, ENBW", "verdict"] == "mismatch"
-    assert c.loc["Table 1, 10 Hz, alpha-beta-gamma, stability", "verdict"] == "mismatch"
-    assert c.loc["Table 2, 10 Hz, alpha-beta-gamma, beta", "verdict"] == "explained"
-    g = c.loc["Table 1, 10 Hz, alpha-beta-gamma, gamma (Huang's, = canonical/2)"]
-    assert g["verdict"] == "mismatch"
-    # type I: alpha is xi itself, so a type I alpha row shares its xi row's verdict
-    assert c.loc["Table 1, 10 Hz, alpha-beta, alpha", "verdict"] == "mismatch"
-    counts = c["verdict"].value_counts().to_dict()
-    assert counts == {"match": 17, "explained": 16, "mismatch": 27}
-
-
+# --------------------------------------------------------------------------- simulation
 def test_range_track_starts_on_the_true_range_and_rate():
     # a loop started on r0 and v0 has no error at t = 0 whatever v0 is, and with no
     # acceleration or jerk none afterwards (noise-free part)
@@ -290,3 +250,14 @@ def test_range_track_starts_on_the_true_range_and_rate():
     g = design.huang_type2(0.9, order=3)
     df = huang.simulate_range_track({"g": g}, T, 300, 0.0, 0.0, 1.0, seed=3, r0=1e4, v0=300.0)
     np.testing.assert_allclose(df["lag_g"].to_numpy(), 0.0, atol=1e-9)
+
+
+def test_position_step_start_sees_the_whole_range():
+    # started at rest from the zero state, the first error is the whole initial range
+    g = design.huang_type2(0.9, order=3)
+    df = huang.simulate_range_track(
+        {"g": g}, T, 300, 0.0, 0.0, 1.0, seed=3, r0=1e4, v0=0.0, start="position_step"
+    )
+    assert df["lag_g"].iloc[0] == pytest.approx(1e4)
+    with pytest.raises(ValueError, match="start must be one of"):
+        huang.simulate_range_track({"g": g}, T, 30, 0.0, 0.0, 1.0, seed=3, start="x")
