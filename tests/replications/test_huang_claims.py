@@ -56,6 +56,36 @@ def verdict(s, key):
     return judge(DOC, row, res.value, res.note, alts)["verdict"]
 
 
+#: The assumed inputs of how the simulated loops start (config.yaml, huang.plausible).
+STARTS = ("huang.simulation.start", "huang.simulation.initial_range_error_m", "huang.target.v0")
+E0 = "huang.simulation.initial_range_error_m"
+E0_RANGE = (-74.9, 74.9)  # inside the nominal gate c tau / 4 = 74.95 m, either sign
+
+
+def direct_run(g: Gains, e0: float, n: int, noise=None) -> np.ndarray:
+    """Error of the predicted position of a direct run of abglib.track on the printed
+    target (A = 1000 m/s^2, B = 40 m/s^3, from rest at 0) started e0 short of it with the
+    true rate; noise-free unless ``noise`` is given."""
+    t = np.arange(n) * T
+    truth = 1000 * t**2 / 2 + 40 * t**3 / 6
+    z = truth if noise is None else truth + noise
+    return truth - track(z, g, dt=T, init=np.array([-e0, 0.0, 0.0])).x_pred
+
+
+def superposed_lag(g: Gains, e0: float, n: int) -> np.ndarray:
+    """The noise-free error as the linear superposition of the acceleration/jerk
+    transient of a loop started on the target and its free response to e0."""
+    return direct_run(g, 0.0, n) - track(np.zeros(n), g, dt=T, init=np.array([-e0, 0, 0])).x_pred
+
+
+def study_lag(g: Gains, e0: float, n: int) -> np.ndarray:
+    """The same error through the study's simulation (simulate_range_track)."""
+    from abglib.replications.huang import simulate_range_track
+
+    df = simulate_range_track({"g": g}, T, n, 1000.0, 40.0, 1.0, 1, initial_range_error=e0)
+    return df["lag_g"].to_numpy()
+
+
 def truth_radius(g: Gains) -> float:
     """Spectral radius of the closed-loop matrix (eigenvalues, not Jury's inequalities)."""
     return float(max(abs(np.linalg.eigvals(state_space(g).F))))
@@ -356,10 +386,7 @@ def test_fig5_ab_cumulates(study):
     m = study.metrics.loc["ab_t2_10_printed"]
     assert m["lag_slope"] == pytest.approx(40 * T * T / 0.0025, rel=1e-3)
     assert result(study, "fig5.ab_cumulates").value is True
-    assert CLAIMS.depends_on("fig5.ab_cumulates") == (
-        "huang.simulation.start",
-        "huang.simulation.duration_s",
-    )
+    assert CLAIMS.depends_on("fig5.ab_cumulates") == (*STARTS, "huang.simulation.duration_s")
 
 
 @claim_test(DOC, "fig5.abg_converges")
@@ -375,10 +402,13 @@ def test_fig5_abg_less(study):
     m = study.metrics
     assert m.loc["abg_t2_10", "rms_settled"] < m.loc["ab_t2_10_printed", "rms_settled"]
     assert result(study, "fig5.abg_less").value is True
-    # robust: still true with the larger noise (both scale alike) and the position step
+    # robust: still true with the larger noise (both scale alike), without the rate and
+    # at either end of the initial range error
     for path, value in (
         ("huang.simulation.noise", "printed_single_pulse"),
-        ("huang.simulation.start", "position_step"),
+        ("huang.simulation.start", "range_only"),
+        (E0, E0_RANGE[0]),
+        (E0, E0_RANGE[1]),
     ):
         assert result(variant(path, value), "fig5.abg_less").value is True
 
@@ -403,6 +433,13 @@ def test_fig5_abg_2hz(study):
     assert result(study, "fig5.abg_2hz").value is False
     # a gate of 0.6 c tau / 2 = 89.9 m keeps it: the verdict hinges on the gate
     assert result(variant("huang.gate_fraction_of_pulse", 0.6), "fig5.abg_2hz").value is True
+    # and on the initial range error: started 15 m short, the free response swings back
+    # while the acceleration transient builds, and the peak (direct run) stays inside
+    g = design.huang_for_enbw(2.0, T, "type2", 3)
+    n = len(study.track)
+    noise = (study.track["z"] - study.track["truth"]).to_numpy()
+    assert np.max(np.abs(direct_run(g, 15.0, n, noise))) < study.gate_m
+    assert result(variant(E0, 15.0), "fig5.abg_2hz").value is True
     assert "huang.gate_fraction_of_pulse" in CLAIMS.depends_on("fig5.abg_2hz")
 
 
@@ -421,10 +458,21 @@ def test_fig6_amplitude(study):
     m = study.metrics
     assert m.loc["abg_t1_4", "peak_lag"] > 10 * m.loc["abg_t1_40", "peak_lag"]
     assert result(study, "fig6.amplitude").value is True
-    # from rest, both peaks are the 10 km step: the claim no longer holds
-    assert (
-        result(variant("huang.simulation.start", "position_step"), "fig6.amplitude").value is False
-    )
+    n = len(study.track)
+    lo, hi = (design.huang_for_enbw(b, T, "type1", 3) for b in (4.0, 40.0))
+    # started 7.5 m off, the 4 Hz transient still dominates (superposition, direct runs)
+    assert np.max(np.abs(superposed_lag(lo, 7.5, n))) > np.max(np.abs(superposed_lag(hi, 7.5, n)))
+    assert result(variant(E0, 7.5), "fig6.amplitude").value is True
+    # started 30 m or more off (either sign), the largest noise-free error of both loops is
+    # the initial error itself: no larger amplitude at the lower ENBW
+    for e0 in (-30.0, 30.0, *E0_RANGE):
+        for g in (lo, hi):
+            lag = superposed_lag(g, e0, n)
+            np.testing.assert_allclose(lag, study_lag(g, e0, n), atol=1e-6)
+            assert np.max(np.abs(lag)) == pytest.approx(abs(e0), rel=1e-9)
+        assert result(variant(E0, e0), "fig6.amplitude").value is False
+    # without the rate (v0 = 0: the same start) it holds
+    assert result(variant("huang.simulation.start", "range_only"), "fig6.amplitude").value
 
 
 @claim_test(DOC, "fig6.lost_4hz")
@@ -433,8 +481,15 @@ def test_fig6_lost(study):
     g = design.huang_for_enbw(4.0, T, "type1", 3)
     assert truth_radius(g) < 1
     assert result(study, "fig6.lost_4hz").value is False
-    # from rest, the 10 km position step leaves every gate at once
-    assert result(variant("huang.simulation.start", "position_step"), "fig6.lost_4hz").value is True
+    # started anywhere inside the gate, the largest error with noise (direct run on the
+    # study's noise) is the initial error or less: still not lost
+    n = len(study.track)
+    noise = (study.track["z"] - study.track["truth"]).to_numpy()
+    for e0 in E0_RANGE:
+        err = direct_run(g, e0, n, noise)
+        assert np.max(np.abs(err)) == pytest.approx(abs(e0), rel=1e-9)
+        assert abs(e0) < study.gate_m
+        assert result(variant(E0, e0), "fig6.lost_4hz").value is False
 
 
 @claim_test(DOC, "fig7.faster")
@@ -456,13 +511,33 @@ def test_fig7_overshoot(study):
     err = truth - track(truth, g, dt=T, init=np.array([0.0, 0.0, 0.0])).x_pred
     assert err.min() >= -1e-9
     assert result(study, "fig7.overshoot").value is False
+    # started off the range the loops overshoot (the free response of a type-3 loop to an
+    # initial error swings past zero), more at 40 Hz: the claim then holds
+    hi = design.huang_for_enbw(40.0, T, "type2", 3)
+    n = len(study.track)
+
+    def overshoot(lag):
+        return max(0.0, -lag.min() / lag.max())
+
+    for e0 in (7.5, *E0_RANGE):
+        lo_lag, hi_lag = superposed_lag(g, e0, n), superposed_lag(hi, e0, n)
+        np.testing.assert_allclose(lo_lag, study_lag(g, e0, n), atol=1e-6)
+        assert overshoot(hi_lag) > overshoot(lo_lag)
+        assert result(variant(E0, e0), "fig7.overshoot").value is True
 
 
 @claim_test(DOC, "fig7.steady_low")
 def test_fig7_steady(study):
     assert study.metrics.loc["abg_t2_4", "peak_err"] < study.gate_m
     assert result(study, "fig7.steady_low").value is True
-    assert not result(variant("huang.simulation.start", "position_step"), "fig7.steady_low").value
+    # started anywhere inside the gate, the largest error (direct run on the study's noise)
+    # stays inside it: steady over the whole range
+    g = design.huang_for_enbw(4.0, T, "type2", 3)
+    n = len(study.track)
+    noise = (study.track["z"] - study.track["truth"]).to_numpy()
+    for e0 in E0_RANGE:
+        assert np.max(np.abs(direct_run(g, e0, n, noise))) < study.gate_m
+        assert result(variant(E0, e0), "fig7.steady_low").value is True
 
 
 @claim_test(DOC, "fig67.type2_better")

@@ -252,12 +252,48 @@ def test_range_track_starts_on_the_true_range_and_rate():
     np.testing.assert_allclose(df["lag_g"].to_numpy(), 0.0, atol=1e-9)
 
 
-def test_position_step_start_sees_the_whole_range():
-    # started at rest from the zero state, the first error is the whole initial range
+def _free_response(g, n, e0=0.0, rate_error=0.0):
+    """Noise-free error of a loop tracking a target at rest at 0 when its first prediction
+    is ``e0`` short of it with a rate ``rate_error`` too low (a direct run of track)."""
+    init = np.array([-e0 + rate_error * T, -rate_error, 0.0])  # one sample before t = 0
+    return -track(np.zeros(n), g, dt=T, init=init, outputs=("x_pred",)).x_pred
+
+
+@pytest.mark.parametrize("e0", [-74.9, 30.0])
+def test_initial_range_error_adds_the_free_response(e0):
+    # the loop is linear: started e0 off the range, its noise-free error is that of the
+    # loop started on the range plus its free response to e0; the noise adds the same
     g = design.huang_type2(0.9, order=3)
-    df = huang.simulate_range_track(
-        {"g": g}, T, 300, 0.0, 0.0, 1.0, seed=3, r0=1e4, v0=0.0, start="position_step"
+    args = ({"g": g}, T, 600, 1000.0, 40.0, 19.0)
+    kw = {"seed": 3, "r0": 1e4, "v0": 250.0}
+    on = huang.simulate_range_track(*args, **kw)
+    off = huang.simulate_range_track(*args, **kw, initial_range_error=e0)
+    free = _free_response(g, 600, e0=e0)
+    np.testing.assert_allclose(off["lag_g"], on["lag_g"] + free, atol=1e-7)
+    np.testing.assert_allclose(off["err_g"] - off["lag_g"], on["err_g"] - on["lag_g"], atol=1e-7)
+    # by hand: the first error is e0; one update later (1 - alpha - beta - gamma/2) e0
+    assert off["lag_g"].iloc[0] == pytest.approx(e0, abs=1e-7)
+    a, b, c = float(g.alpha), float(g.beta), float(g.gamma)
+    assert free[1] == pytest.approx((1 - a - b - c / 2) * e0, rel=1e-12)
+    assert abs(free[-1]) < 1e-6 * abs(e0)  # a stable loop forgets its start
+
+
+def test_range_only_start_adds_the_free_response_to_the_rate():
+    # without the rate the loop sees a rate error of v0 (and nothing else); with v0 = 0 the
+    # two starts coincide
+    g = design.huang_type2(0.9, order=3)
+    args = ({"g": g}, T, 600, 1000.0, 40.0, 19.0)
+    on = huang.simulate_range_track(*args, seed=3, r0=1e4, v0=300.0)
+    ro = huang.simulate_range_track(*args, seed=3, r0=1e4, v0=300.0, start="range_only")
+    np.testing.assert_allclose(
+        ro["lag_g"], on["lag_g"] + _free_response(g, 600, rate_error=300.0), atol=1e-7
     )
-    assert df["lag_g"].iloc[0] == pytest.approx(1e4)
+    assert ro["lag_g"].iloc[1] == pytest.approx(on["lag_g"].iloc[1] + 300.0 * T, abs=1e-7)
+    same = [huang.simulate_range_track(*args, seed=3, r0=1e4, start=s) for s in huang.START]
+    np.testing.assert_array_equal(same[0]["err_g"], same[1]["err_g"])
     with pytest.raises(ValueError, match="start must be one of"):
         huang.simulate_range_track({"g": g}, T, 30, 0.0, 0.0, 1.0, seed=3, start="x")
+    with pytest.raises(ValueError, match="initial_range_error must be finite"):
+        huang.simulate_range_track(
+            {"g": g}, T, 30, 0.0, 0.0, 1.0, seed=3, initial_range_error=np.nan
+        )

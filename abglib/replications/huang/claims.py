@@ -43,6 +43,11 @@ STUDY = HuangStudy
 #: The assumed inputs (``config.yaml``, ``huang.plausible``).
 GATE = "huang.gate_fraction_of_pulse"
 START = "huang.simulation.start"
+RANGE_ERROR = "huang.simulation.initial_range_error_m"
+V0 = "huang.target.v0"
+#: How the simulated loops start: what they know (START), their initial range error and
+#: the unprinted range rate (which acts only when the rate is not known).
+STARTS = (START, RANGE_ERROR, V0)
 NOISE = "huang.simulation.noise"
 SETTLE = "huang.simulation.settle_fraction"
 DURATION = "huang.simulation.duration_s"
@@ -70,10 +75,13 @@ def _lost(s: HuangStudy, name: str) -> bool:
 
 def _start_note(s: HuangStudy) -> str:
     start = s.cfg["simulation"]["start"]
+    e0 = float(s.cfg["simulation"]["initial_range_error_m"])
     if start == "true_state":
-        return "loops started on the true range and rate"
-    r0 = s.cfg["target"]["r0"]
-    return f"loops started at rest from the zero state (a {r0:g} m position step)"
+        what = "the true range rate"
+    else:
+        what = f"zero range rate (true {float(s.cfg['target']['v0']):g} m/s)"
+    where = "on the range" if e0 == 0 else f"{e0:g} m off the range"
+    return f"loops started {where} with {what} and zero acceleration"
 
 
 # --------------------------------------------------------------------------- Tables 1-2
@@ -494,7 +502,7 @@ def _fig5_444(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig5.ab_cumulates", depends_on=(START, DURATION))
+@CLAIMS.claim("fig5.ab_cumulates", depends_on=(*STARTS, DURATION))
 def _fig5_cumulates(s: HuangStudy) -> Result:
     f5, *_ = _sim(s)
     m = s.metrics.loc[f"ab_t2_{f5}_printed"]
@@ -505,7 +513,7 @@ def _fig5_cumulates(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig5.abg_converges", depends_on=(START, NOISE, DURATION))
+@CLAIMS.claim("fig5.abg_converges", depends_on=(*STARTS, NOISE, DURATION))
 def _fig5_converges(s: HuangStudy) -> Result:
     f5, *_ = _sim(s)
     m, p = s.metrics.loc[f"abg_t2_{f5}"], s.metrics.loc[f"abg_t2_{f5}_printed"]
@@ -517,7 +525,7 @@ def _fig5_converges(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig5.abg_less", depends_on=(START, NOISE, DURATION))
+@CLAIMS.claim("fig5.abg_less", depends_on=(*STARTS, NOISE, DURATION))
 def _fig5_less(s: HuangStudy) -> Result:
     f5, *_ = _sim(s)
     ab, abg = s.metrics.loc[f"ab_t2_{f5}_printed"], s.metrics.loc[f"abg_t2_{f5}"]
@@ -553,7 +561,7 @@ def _fig5_flexible(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig5.abg_2hz", depends_on=(GATE, START, NOISE, DURATION))
+@CLAIMS.claim("fig5.abg_2hz", depends_on=(GATE, *STARTS, NOISE, DURATION))
 def _fig5_2hz(s: HuangStudy) -> Result:
     _, lo, *_ = _sim(s)
     m = s.metrics.loc[f"abg_t2_{lo}"]
@@ -603,7 +611,7 @@ def _pair(s: HuangStudy, rule: str):
     return s.metrics.loc[f"abg_t{rule}_{lo}"], s.metrics.loc[f"abg_t{rule}_{hi}"], lo, hi
 
 
-@CLAIMS.claim("fig6.amplitude", depends_on=(START, SETTLE, DURATION))
+@CLAIMS.claim("fig6.amplitude", depends_on=(*STARTS, SETTLE, DURATION))
 def _fig6_amplitude(s: HuangStudy) -> Result:
     a, b, lo, hi = _pair(s, "1")
     return Result(
@@ -614,7 +622,7 @@ def _fig6_amplitude(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig6.lost_4hz", depends_on=(GATE, START, NOISE, DURATION))
+@CLAIMS.claim("fig6.lost_4hz", depends_on=(GATE, *STARTS, NOISE, DURATION))
 def _fig6_lost(s: HuangStudy) -> Result:
     a, _, lo, _ = _pair(s, "1")
     lost = _lost(s, f"abg_t1_{lo}")
@@ -624,13 +632,13 @@ def _fig6_lost(s: HuangStudy) -> Result:
         lost,
         f"type I gains with a true {lo} Hz ENBW (pole radius {a['pole_radius']:.4f}): largest "
         f"error {a['peak_err']:.1f} m {'>' if lost else '<'} {s.gate_m:.1f} m "
-        f"({_start_note(s)}). With the loops started on the target a loss needs unstable gains "
+        f"({_start_note(s)}). With the loops started inside the gate a loss needs unstable gains "
         f"such as the printed type I sets {', '.join(unstable['cell'])} (pole radius "
         f"{', '.join(f'{r:.3f}' for r in unstable['pole_radius'])}); section 8",
     )
 
 
-@CLAIMS.claim("fig7.faster", depends_on=(START, SETTLE, DURATION))
+@CLAIMS.claim("fig7.faster", depends_on=(*STARTS, SETTLE, DURATION))
 def _fig7_faster(s: HuangStudy) -> Result:
     a, b, lo, hi = _pair(s, "2")
     return Result(
@@ -640,7 +648,7 @@ def _fig7_faster(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig7.overshoot", depends_on=(START, DURATION))
+@CLAIMS.claim("fig7.overshoot", depends_on=(*STARTS, DURATION))
 def _fig7_overshoot(s: HuangStudy) -> Result:
     a, b, _, _ = _pair(s, "2")
     c, d, _, _ = _pair(s, "1")
@@ -652,7 +660,7 @@ def _fig7_overshoot(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig7.steady_low", depends_on=(GATE, START, NOISE, DURATION))
+@CLAIMS.claim("fig7.steady_low", depends_on=(GATE, *STARTS, NOISE, DURATION))
 def _fig7_steady(s: HuangStudy) -> Result:
     a, _, lo, _ = _pair(s, "2")
     lost = _lost(s, f"abg_t2_{lo}")
@@ -663,7 +671,7 @@ def _fig7_steady(s: HuangStudy) -> Result:
     )
 
 
-@CLAIMS.claim("fig67.type2_better", depends_on=(START, NOISE, DURATION))
+@CLAIMS.claim("fig67.type2_better", depends_on=(*STARTS, NOISE, DURATION))
 def _fig67(s: HuangStudy) -> Result:
     t1lo, t1hi, lo, hi = _pair(s, "1")
     t2lo, t2hi, _, _ = _pair(s, "2")

@@ -1,6 +1,6 @@
 r"""Seed 002, Figures 5-7: the simulated range track and the summary of each run.
 
-``START``                 how a loop is started (the paper does not say)
+``START``                 what a loop knows when it starts (the paper does not say)
 ``simulate_range_track``  constant-jerk target, Gaussian noise, several loops (seeded)
 ``error_metrics``         lag, peak, settling and overshoot of one run
 """
@@ -16,13 +16,24 @@ from ...simulate import polynomial_track, sample_times, white_noise
 
 __all__ = ["START", "error_metrics", "simulate_range_track"]
 
-#: Ways to start the loop: on the true range and rate (zero acceleration), or at rest
-#: from the zero state (the first sample is a position step of ``r0``).
-START = ("true_state", "position_step")
+#: What a loop knows when it starts, after acquisition: the range and the range rate
+#: (``true_state``), or the range only (``range_only``: zero rate); the acceleration is
+#: unknown (zero) either way. The range itself may be off by ``initial_range_error``.
+START = ("true_state", "range_only")
 
 
 def simulate_range_track(
-    trackers: dict, dt, n, accel, jerk, sigma_m, seed, r0=0.0, v0=0.0, start="true_state"
+    trackers: dict,
+    dt,
+    n,
+    accel,
+    jerk,
+    sigma_m,
+    seed,
+    r0=0.0,
+    v0=0.0,
+    start="true_state",
+    initial_range_error=0.0,
 ) -> pd.DataFrame:
     r"""Range track of seed 002's simulation: constant jerk, Gaussian noise, several loops.
 
@@ -42,11 +53,16 @@ def simulate_range_track(
         Seed of the noise (the same noise for every tracker).
     r0, v0 : float
         Initial range (m) and range rate (m/s).
-    start : {"true_state", "position_step"}, default "true_state"
-        ``"true_state"``: each loop starts on the true range and range rate with zero
-        acceleration; ``"position_step"``: each loop starts at rest from the zero state
-        (:func:`abglib.track`'s ``init="zero"``), so it first sees a step of ``r0`` in
-        range (and ``v0`` in rate). The paper does not say how its loops start.
+    start : {"true_state", "range_only"}, default "true_state"
+        ``"true_state"``: each loop starts with the true range rate and zero
+        acceleration; ``"range_only"``: with zero range rate and zero acceleration (the
+        rate is unknown, a rate error of ``v0``). The paper does not say how its loops
+        start.
+    initial_range_error : float, default 0.0
+        Range error (m) the loop starts with: its first predicted range is
+        ``r0 - initial_range_error``, so the first error ``truth - prediction`` is
+        ``initial_range_error`` (a target acquired inside the range gate is off by at most
+        the gate's half-width).
 
     Returns
     -------
@@ -58,21 +74,29 @@ def simulate_range_track(
     Notes
     -----
     Truth :math:`R(t) = r_0 + v_0 t + A t^2/2 + B t^3/6` (seed 002: "the target's
-    acceleration is A, and the acceleration changing rate is B"). With
-    ``start="true_state"`` each loop starts from the true range and range rate and zero
-    acceleration (an explicit initial state of :func:`abglib.track`), so its transient is
-    the response to the unknown acceleration alone. The error is that of the predicted
-    position, the output of the paper's ``H(z)``.
+    acceleration is A, and the acceleration changing rate is B"). Each loop starts from
+    an explicit initial state of :func:`abglib.track` (the smoothed state one sample
+    before ``t = 0``) whose prediction for ``t = 0`` is the range ``r0 -
+    initial_range_error`` with rate ``v0`` (``true_state``) or 0 (``range_only``) and zero
+    acceleration. With ``true_state`` and no range error the transient is the response to
+    the unknown acceleration alone; the loop is linear, so a range error ``e0`` adds the
+    loop's free response to an initial error ``e0`` (and ``range_only`` that to a rate
+    error ``v0``). The error is that of the predicted position, the output of the paper's
+    ``H(z)``.
     """
     if start not in START:
         raise AbglibValueError(f"start must be one of {list(START)}, got {start!r}")
+    e0 = float(initial_range_error)
+    if not np.isfinite(e0):
+        raise AbglibValueError(f"initial_range_error must be finite, got {initial_range_error!r}")
     T = float(check_positive("dt", dt))
     t = sample_times(int(n), T)
     truth = polynomial_track(t, r0, v0, accel, jerk)
     z = truth + white_noise(t.shape, sigma_m, seed)
     # ``track``'s explicit init is the state one sample before t = 0, so that its first
-    # prediction is the true range r0 with the true rate v0
-    init = np.array([r0 - v0 * T, v0, 0.0]) if start == "true_state" else "zero"
+    # prediction is the range r0 - e0 with the rate v1 (v0, or 0 if the rate is unknown)
+    v1 = float(v0) if start == "true_state" else 0.0
+    init = np.array([r0 - e0 - v1 * T, v1, 0.0])
     out = {"t": t, "truth": truth, "z": z}
     for name, g in trackers.items():
         noisy = track(z, g, dt=T, init=init, outputs=("x_pred",)).x_pred

@@ -5,7 +5,8 @@ Tables 1-2 (``data/published/huang``): the ``B_n T`` curves of Figures 2-3, the 
 error of Figure 4, Tables 1-2 cell by cell with every ENBW route, and the simulated range
 track of Figures 5-7 with its summary. Each piece is a
 :func:`functools.cached_property`, so a claim re-judged at another value of an assumed
-input (the range gate, how the loop is started, the noise level, the settling band)
+input (the range gate, how the loop is started and its initial range error, the noise
+level, the settling band)
 recomputes only what it reads.
 """
 
@@ -251,6 +252,7 @@ class HuangStudy(Study):
         return simulate_range_track(
             self.trackers, self.dt, n, tgt["accel"], tgt["jerk"], self.sigma_m,
             int(sim["seed"]), tgt["r0"], tgt["v0"], start=sim["start"],
+            initial_range_error=float(sim["initial_range_error_m"]),
         )  # fmt: skip
 
     @cached_property
