@@ -118,6 +118,7 @@ REPORT_CONTENT = {
             "abg",
             "omega_sweep",
             "kalman_sweep",
+            "design_errors",
             "robustness",
         ],
     },

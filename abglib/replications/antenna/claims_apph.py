@@ -15,8 +15,11 @@ EDGE_NOTE = "linear closed loop (quantisation left out), spectral radius > 1 + t
 @CLAIMS.claim("appH.nominal_err", depends_on=EST)
 def _nominal(s):
     e = s.long_run.e_med
-    return Result(e, f"long run ({s.cfg['robustness']['duration']:g} time units) at the optimal "
-                  "settings, median over the object phases of the run's max |e|")  # fmt: skip
+    return Result(
+        e,
+        f"long run ({s.cfg['robustness']['duration']:g} time units) at the optimal "
+        "settings, median over the object phases of the run's max |e|",
+    )
 
 
 EDGES = {
@@ -28,16 +31,20 @@ EDGES = {
 }
 
 
-@CLAIMS.family(r"appH\.(beta_d_upper|beta_a_lower|beta_a_upper|p_a_lower|p_a_upper)",
-               depends_on=EST)  # fmt: skip
+@CLAIMS.family(
+    r"appH\.(beta_d_upper|beta_a_lower|beta_a_upper|p_a_lower|p_a_upper)", depends_on=EST
+)
 def _edge(s, key):
     name, side = EDGES[key]
     row = s.stability_of(name)
     v = float(row[side])
     if np.isnan(v):
         lim = row["grid_min" if side == "lower" else "grid_max"]
-        return Result(float(lim), f"{EDGE_NOTE}; stable to the end of the grid: the limit is "
-                      f"beyond {lim:g} (a bound, not a limit)")  # fmt: skip
+        return Result(
+            float(lim),
+            f"{EDGE_NOTE}; stable to the end of the grid: the limit is "
+            f"beyond {lim:g} (a bound, not a limit)",
+        )
     return Result(v, EDGE_NOTE)
 
 
@@ -46,17 +53,23 @@ def _bd_below(s):
     d = s.design_errors_of("beta_d")
     d = d[d["factor"] < 4.0]
     un = d[~d["stable"]]["factor"]
-    return Result(bool(d["stable"].all()), "unstable design factors below 4 on the grid: "
-                  + (f"{un.min():.3g} ... {un.max():.3g}" if len(un) else "none")
-                  + f"; largest (median) max error {d['e_max'].max():.3g}")  # fmt: skip
+    return Result(
+        bool(d["stable"].all()),
+        "unstable design factors below 4 on the grid: "
+        + (f"{un.min():.3g} ... {un.max():.3g}" if len(un) else "none")
+        + f"; largest (median) max error {d['e_max'].max():.3g}",
+    )
 
 
 @CLAIMS.claim("appH.p_a_inertia")
 def _inertia(s):
     dp = 0.005
-    return Result(None, f"p_a was reconstructed from this remark (100 x {dp:g} / (1 - p_a) = "
-                  f"{100 * dp / (1 - s.params.p_a):.3g} % by construction), so it cannot also "
-                  "test it")  # fmt: skip
+    return Result(
+        None,
+        f"p_a was reconstructed from this remark (100 x {dp:g} / (1 - p_a) = "
+        f"{100 * dp / (1 - s.params.p_a):.3g} % by construction), so it cannot also "
+        "test it",
+    )
 
 
 @CLAIMS.claim("appH.others_never", depends_on=EST)
@@ -76,5 +89,8 @@ def _most(s):
         hi = r["grid_max"] if np.isnan(r["upper"]) else r["upper"]
         width[n] = float(np.log(hi / lo))
     ok = width["p_a"] < width["beta_d"] and width["beta_a"] < width["beta_d"]
-    return Result(bool(ok), "log-width of the stable design-factor interval: "
-                  + ", ".join(f"{k} {v:.3g}" for k, v in width.items()))  # fmt: skip
+    return Result(
+        bool(ok),
+        "log-width of the stable design-factor interval: "
+        + ", ".join(f"{k} {v:.3g}" for k, v in width.items()),
+    )

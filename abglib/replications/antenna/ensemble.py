@@ -60,8 +60,11 @@ def _filter(a, b, c, n, order, dt, v_w, vv):
     at, ct, gt = taylor_model(order, dt)
     em = extended_model(a, b, c, at, ct, gt)
     kg = kalman_gains(em, v_w, np.frombuffer(vv).reshape(2, 2))
-    out = (np.ascontiguousarray(em.A - kg.Kf @ em.M), np.ascontiguousarray(kg.Kf),
-           np.ascontiguousarray(em.B[:, 0]))  # fmt: skip
+    out = (
+        np.ascontiguousarray(em.A - kg.Kf @ em.M),
+        np.ascontiguousarray(kg.Kf),
+        np.ascontiguousarray(em.B[:, 0]),
+    )
     for x in out:
         x.setflags(write=False)
     return out
@@ -209,16 +212,34 @@ def simulate_phases(
         if v_w is None or v_v is None:
             raise AbglibValueError("mode 'kalman' needs v_w and v_v")
         vv = np.atleast_2d(np.asarray(v_v, dtype=float))
-        af, kf, be = _filter(ctrl.A.tobytes(), ctrl.B.tobytes(), ctrl.C.tobytes(), ctrl.A.shape[0],
-                             order, dt, float(v_w), vv.tobytes())  # fmt: skip
+        af, kf, be = _filter(
+            ctrl.A.tobytes(),
+            ctrl.B.tobytes(),
+            ctrl.C.tobytes(),
+            ctrl.A.shape[0],
+            order,
+            dt,
+            float(v_w),
+            vv.tobytes(),
+        )
         _kalman_loop(a, bcol, cc, k, kt, af, kf, be, xt, res, y, u, err)
     else:
         if abg is None:
             raise AbglibValueError("mode 'abg' needs alpha-beta-gamma gains")
         ss = state_space(abg, dt, reduced=False)
         _abg_loop(
-            a, bcol, cc, k, kt, np.ascontiguousarray(ss.Phi),
-            np.ascontiguousarray(np.ravel(ss.K)), xt, res, y, u, err,
-        )  # fmt: skip
+            a,
+            bcol,
+            cc,
+            k,
+            kt,
+            np.ascontiguousarray(ss.Phi),
+            np.ascontiguousarray(np.ravel(ss.K)),
+            xt,
+            res,
+            y,
+            u,
+            err,
+        )
     z = xt[:, 0, :]
     return {"t": t, "z": z, "y": y, "e": y - z, "u": u, "xt_err": err}

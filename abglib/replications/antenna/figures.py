@@ -195,7 +195,7 @@ _ANTENNA_FIGURES = {
     "kalman_vw": ("kalman_runs", _antenna_kalman_vw),
     "kalman_sweep": ("kalman_sweep", _antenna_kalman_sweep),
     "amplitude": ("kalman_runs", _antenna_amplitude),
-    "robustness": ("robustness", _antenna_robustness),
+    "robustness": ("design_errors", _antenna_robustness),
     "abg": ("abg", _antenna_abg),
 }
 

@@ -76,13 +76,15 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
     ):
         raise AbglibValueError("V_w must be symmetric positive semidefinite")
     qn, ok = _kalman_iterate(
-        np.ascontiguousarray(a, dtype=float), np.ascontiguousarray(m, dtype=float),
-        np.ascontiguousarray(vw), np.ascontiguousarray(vv), float(tol), int(max_iter),
-    )  # fmt: skip
+        np.ascontiguousarray(a, dtype=float),
+        np.ascontiguousarray(m, dtype=float),
+        np.ascontiguousarray(vw),
+        np.ascontiguousarray(vv),
+        float(tol),
+        int(max_iter),
+    )
     if not ok:
-        raise AbglibValueError(
-            f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}"
-        )
+        raise AbglibValueError(f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}")
     return qn
 
 

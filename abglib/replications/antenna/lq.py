@@ -62,9 +62,14 @@ def riccati_iterate(a, b, qx, r, tol=1e-13, max_iter=200000):
     p = np.array(qx, dtype=float)
     rinv_bt = np.ascontiguousarray(np.linalg.solve(r, b.T))
     p, ok = _riccati_loop(
-        np.ascontiguousarray(a, dtype=float), np.ascontiguousarray(b, dtype=float), rinv_bt,
-        np.ascontiguousarray(qx, dtype=float), p, float(tol), int(max_iter),
-    )  # fmt: skip
+        np.ascontiguousarray(a, dtype=float),
+        np.ascontiguousarray(b, dtype=float),
+        rinv_bt,
+        np.ascontiguousarray(qx, dtype=float),
+        p,
+        float(tol),
+        int(max_iter),
+    )
     if not ok:
         raise AbglibValueError(f"Riccati iteration (eq 2.12) did not converge in {max_iter} steps")
     return p

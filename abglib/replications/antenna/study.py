@@ -58,32 +58,55 @@ TABLES = (
 
 #: Where the text fixes (or leaves open) each model input: (basis, where).
 PARAMETER_BASIS = {
-    "p_a": ("app. H: 'the small range of 0.5 % in p_a allows variations in J_a and J_d of "
-            "about 5 %'; with p_a = J_a/(J_a+J_d), d ln p_a = (1 - p_a) d ln J_a, so "
-            "1 - p_a = 0.1", "app. H, p. 38"),
+    "p_a": (
+        "app. H: 'the small range of 0.5 % in p_a allows variations in J_a and J_d of "
+        "about 5 %'; with p_a = J_a/(J_a+J_d), d ln p_a = (1 - p_a) d ln J_a, so "
+        "1 - p_a = 0.1",
+        "app. H, p. 38",
+    ),
     "p_d": ("app. H: p_d = 1 - p_a (derived, not free)", "app. H, p. 37"),
-    "p_f": ("not in the text (the value list is lost); neutral choice equal to the antenna + "
-            "rotor inertia; app. H says any value gives a stable loop", "ch. 5 p. 12; app. H"),
-    "beta_a": ("not in the text; a typical structural damping ratio of an antenna (5 %)",
-               "ch. 5, p. 12"),
-    "beta_d": ("'the damping of the driver is about one tenth of the antenna damping'",
-               "ch. 5, p. 12"),
-    "beta_f": ("'the damping of the foundation is about twice as big as the damping of the "
-               "antenna'", "ch. 5, p. 12"),
+    "p_f": (
+        "not in the text (the value list is lost); neutral choice equal to the antenna + "
+        "rotor inertia; app. H says any value gives a stable loop",
+        "ch. 5 p. 12; app. H",
+    ),
+    "beta_a": (
+        "not in the text; a typical structural damping ratio of an antenna (5 %)",
+        "ch. 5, p. 12",
+    ),
+    "beta_d": (
+        "'the damping of the driver is about one tenth of the antenna damping'",
+        "ch. 5, p. 12",
+    ),
+    "beta_f": (
+        "'the damping of the foundation is about twice as big as the damping of the antenna'",
+        "ch. 5, p. 12",
+    ),
     "kappa": ("'the stiffness of the carriage and the antenna are the same'", "ch. 5, p. 12"),
-    "dt": ("'The sample frequency ... is 10 times the eigenfrequency of the antenna'; time "
-           "scaled by the antenna eigenfrequency (1 rad per unit), dt = 2 pi / "
-           "samples_per_period", "ch. 6 p. 13, sec. 8.1"),
+    "dt": (
+        "'The sample frequency ... is 10 times the eigenfrequency of the antenna'; time "
+        "scaled by the antenna eigenfrequency (1 rad per unit), dt = 2 pi / "
+        "samples_per_period",
+        "ch. 6 p. 13, sec. 8.1",
+    ),
     "Q, R": ("'Q = 100, R = 1'; Q/R = 10^4 for Figs I.9, I.15", "ch. 6 p. 13, sec. 6.2"),
-    "V_v": ("OCR fragment '10-3 O 1' after 'The chosen V_v ... is given by'; read as 10^-3 I "
-            "(the variance of a rounding to 0.1 is 0.1^2/12 = 8.3e-4)", "sec. 8.2, p. 20"),
-    "V_w input": ("'the force is assumed to be white noise with intensity V_w': a variance of "
-                  "the highest derivative's rate held over one step (G_t of taylor_model), "
-                  "printed V_w times vw_scale", "sec. 7.3, p. 19"),
-    "phases": ("not in the text: maxima under quantisation are medians over this many object "
-               "phases (the loop is chaotic, shared/notes/antenna-reproducibility.md)",
-               "sec. 8.1"),
-}  # fmt: skip
+    "V_v": (
+        "OCR fragment '10-3 O 1' after 'The chosen V_v ... is given by'; read as 10^-3 I "
+        "(the variance of a rounding to 0.1 is 0.1^2/12 = 8.3e-4)",
+        "sec. 8.2, p. 20",
+    ),
+    "V_w input": (
+        "'the force is assumed to be white noise with intensity V_w': a variance of "
+        "the highest derivative's rate held over one step (G_t of taylor_model), "
+        "printed V_w times vw_scale",
+        "sec. 7.3, p. 19",
+    ),
+    "phases": (
+        "not in the text: maxima under quantisation are medians over this many object "
+        "phases (the loop is chaotic, shared/notes/antenna-reproducibility.md)",
+        "sec. 8.1",
+    ),
+}
 
 
 class AntennaStudy(Study):
@@ -97,9 +120,14 @@ class AntennaStudy(Study):
         """Model parameters; beta_d and beta_f tied to beta_a by the ratios of ch. 5."""
         p = self.cfg["parameters"]
         ba = float(p["beta_a"])
-        return AntennaParams(p_a=p["p_a"], p_f=p["p_f"], beta_a=ba,
-                             beta_d=ba * float(p["beta_d_over_beta_a"]),
-                             beta_f=ba * float(p["beta_f_over_beta_a"]), kappa=p["kappa"])  # fmt: skip
+        return AntennaParams(
+            p_a=p["p_a"],
+            p_f=p["p_f"],
+            beta_a=ba,
+            beta_d=ba * float(p["beta_d_over_beta_a"]),
+            beta_f=ba * float(p["beta_f_over_beta_a"]),
+            kappa=p["kappa"],
+        )
 
     @property
     def dt(self) -> float:
@@ -177,13 +205,13 @@ class AntennaStudy(Study):
 
     @cached_property
     def tracking(self) -> pd.DataFrame:
-        return tracking_table(self.params, self.ctrl, self.amp, self.omega,
-                              self.cfg["time_series"])  # fmt: skip
+        return tracking_table(self.params, self.ctrl, self.amp, self.omega, self.cfg["time_series"])
 
     @cached_property
     def omega_sweep(self) -> pd.DataFrame:
-        return omega_sweep_table({self.q: self.ctrl, self.q_high: self.ctrl_high}, self.r,
-                                 self.cfg["omega_sweep"])  # fmt: skip
+        return omega_sweep_table(
+            {self.q: self.ctrl, self.q_high: self.ctrl_high}, self.r, self.cfg["omega_sweep"]
+        )
 
     # ----------------------------------------------------------------- ch. 8
     @cached_property
@@ -197,11 +225,21 @@ class AntennaStudy(Study):
         key = (order, float(v_w), weight, omega, amplitude)
         hit = self._runs.get(key)
         if hit is None or (keep and hit.run is None):
-            hit = run_stats(self.params, self.controller(weight), transient=self.transient,
-                            keep=keep, amplitude=amplitude, omega=omega,
-                            n_steps=n_steps_for(omega, self.dt, self.sim), phases=self.phases,
-                            mode="kalman", order=order, v_w=self.vw_filter(v_w), v_v=self.vv,
-                            resolution=self.res)  # fmt: skip
+            hit = run_stats(
+                self.params,
+                self.controller(weight),
+                transient=self.transient,
+                keep=keep,
+                amplitude=amplitude,
+                omega=omega,
+                n_steps=n_steps_for(omega, self.dt, self.sim),
+                phases=self.phases,
+                mode="kalman",
+                order=order,
+                v_w=self.vw_filter(v_w),
+                v_v=self.vv,
+                resolution=self.res,
+            )
             self._runs[key] = hit
         return hit
 
@@ -239,18 +277,23 @@ class AntennaStudy(Study):
 
     def sweep_figure(self, fig: str) -> pd.DataFrame:
         """One of Figs I.14 (order 5, Q/R 100), I.15 (order 5, 10^4), I.16 (order 3, 100)."""
-        spec = {"I.14": (5, "q", self.q), "I.15": (5, "q_high", self.q_high),
-                "I.16": (3, "q", self.q)}[fig]  # fmt: skip
+        spec = {
+            "I.14": (5, "q", self.q),
+            "I.15": (5, "q_high", self.q_high),
+            "I.16": (3, "q", self.q),
+        }[fig]
         order, wkey, q = spec
         return kalman_sweep_table(
             lambda o, v, k, w: self.stats(o, v, k, w),
-            [(fig, order, wkey, q / self.r, self.settings[order])], self.sweep_grid,
+            [(fig, order, wkey, q / self.r, self.settings[order])],
+            self.sweep_grid,
         )
 
     @cached_property
     def kalman_sweep(self) -> pd.DataFrame:
-        return pd.concat([self.sweep_figure(f) for f in ("I.14", "I.15", "I.16")],
-                         ignore_index=True)  # fmt: skip
+        return pd.concat(
+            [self.sweep_figure(f) for f in ("I.14", "I.15", "I.16")], ignore_index=True
+        )
 
     # ----------------------------------------------------------------- app. H
     @cached_property
@@ -284,10 +327,20 @@ class AntennaStudy(Study):
     def long_run(self) -> RunStats:
         """The nominal design over the long run of app. H (phase ensemble)."""
         rb = self.cfg["robustness"]
-        return run_stats(self.params, self.ctrl, transient=self.transient, amplitude=self.amp,
-                         omega=self.omega, n_steps=int(np.ceil(float(rb["duration"]) / self.dt)),
-                         phases=self.phases, mode="kalman", order=5,
-                         v_w=self.vw_filter(self.vw_opt5), v_v=self.vv, resolution=self.res)  # fmt: skip
+        return run_stats(
+            self.params,
+            self.ctrl,
+            transient=self.transient,
+            amplitude=self.amp,
+            omega=self.omega,
+            n_steps=int(np.ceil(float(rb["duration"]) / self.dt)),
+            phases=self.phases,
+            mode="kalman",
+            order=5,
+            v_w=self.vw_filter(self.vw_opt5),
+            v_v=self.vv,
+            resolution=self.res,
+        )
 
     # ----------------------------------------------------------------- beyond
     @cached_property
@@ -299,15 +352,31 @@ class AntennaStudy(Study):
     def parameters(self) -> pd.DataFrame:
         p = self.params
         vv = self.cfg["kalman"]["v_v"]
-        values = {"p_a": p.p_a, "p_d": p.p_d, "p_f": p.p_f, "beta_a": p.beta_a,
-                  "beta_d": p.beta_d, "beta_f": p.beta_f, "kappa": p.kappa, "dt": self.dt,
-                  "Q, R": f"{self.q:g}, {self.r:g}",
-                  "V_v": f"diag({vv[0]:g}, {vv[1]:g})" if isinstance(vv, list) else f"{vv:g} I",
-                  "V_w input": f"G_t (taylor_model), printed V_w x {self.vw_filter(1.0):g}",
-                  "phases": len(self.phases)}  # fmt: skip
-        return pd.DataFrame([{"parameter": k, "value": v if isinstance(v, str) else float(v),
-                              "textual_basis": PARAMETER_BASIS[k][0],
-                              "where": PARAMETER_BASIS[k][1]} for k, v in values.items()])  # fmt: skip
+        values = {
+            "p_a": p.p_a,
+            "p_d": p.p_d,
+            "p_f": p.p_f,
+            "beta_a": p.beta_a,
+            "beta_d": p.beta_d,
+            "beta_f": p.beta_f,
+            "kappa": p.kappa,
+            "dt": self.dt,
+            "Q, R": f"{self.q:g}, {self.r:g}",
+            "V_v": f"diag({vv[0]:g}, {vv[1]:g})" if isinstance(vv, list) else f"{vv:g} I",
+            "V_w input": f"G_t (taylor_model), printed V_w x {self.vw_filter(1.0):g}",
+            "phases": len(self.phases),
+        }
+        return pd.DataFrame(
+            [
+                {
+                    "parameter": k,
+                    "value": v if isinstance(v, str) else float(v),
+                    "textual_basis": PARAMETER_BASIS[k][0],
+                    "where": PARAMETER_BASIS[k][1],
+                }
+                for k, v in values.items()
+            ]
+        )
 
     def tables(self) -> dict[str, pd.DataFrame]:
         return {t: getattr(self, t) for t in TABLES}

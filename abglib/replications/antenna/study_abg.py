@@ -33,16 +33,32 @@ def abg_table(s, grid) -> pd.DataFrame:
     for w in grid:
         n = n_steps_for(w, s.dt, s.sim)
         row = {"omega": float(w)}
-        common = dict(transient=s.transient, amplitude=s.amp, omega=float(w), n_steps=n,
-                      phases=s.phases, resolution=s.res)  # fmt: skip
+        common = dict(
+            transient=s.transient,
+            amplitude=s.amp,
+            omega=float(w),
+            n_steps=n,
+            phases=s.phases,
+            resolution=s.res,
+        )
         for order, (v, bn, g) in kal.items():
             ra = run_stats(s.params, s.ctrl, mode="abg", abg=g, **common)
-            rk = run_stats(s.params, s.ctrl, mode="kalman", order=order, v_w=s.vw_filter(v),
-                           v_v=s.vv, **common)  # fmt: skip
-            row.update({f"v_w_{order}": v, f"enbw_{order}": bn,
-                        f"abg{order}_enbw": float(enbw(g, s.dt)), f"alpha_{order}": float(g.alpha),
-                        f"beta_{order}": float(g.beta), f"gamma_{order}": float(g.gamma),
-                        f"e_max_kalman{order}": rk.e_med, f"e_max_abg{order}": ra.e_med,
-                        f"u_max_kalman{order}": rk.u_med, f"u_max_abg{order}": ra.u_med})  # fmt: skip
+            rk = run_stats(
+                s.params, s.ctrl, mode="kalman", order=order, v_w=s.vw_filter(v), v_v=s.vv, **common
+            )
+            row.update(
+                {
+                    f"v_w_{order}": v,
+                    f"enbw_{order}": bn,
+                    f"abg{order}_enbw": float(enbw(g, s.dt)),
+                    f"alpha_{order}": float(g.alpha),
+                    f"beta_{order}": float(g.beta),
+                    f"gamma_{order}": float(g.gamma),
+                    f"e_max_kalman{order}": rk.e_med,
+                    f"e_max_abg{order}": ra.e_med,
+                    f"u_max_kalman{order}": rk.u_med,
+                    f"u_max_abg{order}": ra.u_med,
+                }
+            )
         rows.append(row)
     return pd.DataFrame(rows)

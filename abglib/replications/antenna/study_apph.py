@@ -36,11 +36,29 @@ def design_error_rows(s, name) -> list[dict]:
     for f in factor_grid(rb, s.params, name):
         rad = spectral_radius(s.params, name, f, s.dt, s.q, s.r, 5, s.vw_filter(s.vw_opt5), s.vv)
         ctrl = design_controller(s.params.scaled(name, f), s.dt, s.q, s.r)
-        st = run_stats(s.params, ctrl, transient=s.transient, amplitude=s.amp, omega=s.omega,
-                       n_steps=n, phases=phase_grid(int(rb["phases"])), mode="kalman", order=5,
-                       v_w=s.vw_filter(s.vw_opt5), v_v=s.vv, resolution=s.res)  # fmt: skip
-        rows.append({"parameter": name, "factor": float(f), "spectral_radius": rad,
-                     "stable": bool(rad <= 1.0 + tol), "e_max": st.e_med})  # fmt: skip
+        st = run_stats(
+            s.params,
+            ctrl,
+            transient=s.transient,
+            amplitude=s.amp,
+            omega=s.omega,
+            n_steps=n,
+            phases=phase_grid(int(rb["phases"])),
+            mode="kalman",
+            order=5,
+            v_w=s.vw_filter(s.vw_opt5),
+            v_v=s.vv,
+            resolution=s.res,
+        )
+        rows.append(
+            {
+                "parameter": name,
+                "factor": float(f),
+                "spectral_radius": rad,
+                "stable": bool(rad <= 1.0 + tol),
+                "e_max": st.e_med,
+            }
+        )
     return rows
 
 
@@ -48,7 +66,22 @@ def stability_row(s, name) -> dict:
     """Edges of the stable factor interval around 1 (nan: stable to the end of the grid)."""
     rb = s.cfg["robustness"]
     g = factor_grid(rb, s.params, name)
-    lo, hi = stable_interval(s.params, name, s.dt, s.q, s.r, 5, s.vw_filter(s.vw_opt5), s.vv, g,
-                             float(rb["radius_tolerance"]))  # fmt: skip
-    return {"parameter": name, "lower": lo, "upper": hi, "grid_min": float(g.min()),
-            "grid_max": float(g.max())}  # fmt: skip
+    lo, hi = stable_interval(
+        s.params,
+        name,
+        s.dt,
+        s.q,
+        s.r,
+        5,
+        s.vw_filter(s.vw_opt5),
+        s.vv,
+        g,
+        float(rb["radius_tolerance"]),
+    )
+    return {
+        "parameter": name,
+        "lower": lo,
+        "upper": hi,
+        "grid_min": float(g.min()),
+        "grid_max": float(g.max()),
+    }

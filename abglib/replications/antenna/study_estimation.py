@@ -76,8 +76,13 @@ def vw_search_table(stats, orders, exponents) -> pd.DataFrame:
         for k in range(int(exponents[0]), int(exponents[1]) + 1):
             vw = 5.0 * 10.0**k
             s = stats(order, vw)
-            row = {"order": order, "v_w": vw, "e_max": s.e_med, "u_max": s.u_med,
-                   "e_max_phase0": float(s.e[0])}  # fmt: skip
+            row = {
+                "order": order,
+                "v_w": vw,
+                "e_max": s.e_med,
+                "u_max": s.u_med,
+                "e_max_phase0": float(s.e[0]),
+            }
             for j in range(order + 1):
                 row[f"est_err_d{j}"] = s.est_med(j)
             rows.append(row)
@@ -97,15 +102,29 @@ def kalman_runs_table(run, settings5, amplitudes) -> pd.DataFrame:
     labels = ("model emphasis", "optimal", "measurement emphasis")
     for label, vw in zip(labels, settings5, strict=True):
         r = run(vw, None)
-        d = {"figure": "I.10-I.13", "case": f"{label}, V_w = {vw:.0e}", "t": r["t"],
-             "e": r["e"][0], "u": r["u"][0]}  # fmt: skip
+        d = {
+            "figure": "I.10-I.13",
+            "case": f"{label}, V_w = {vw:.0e}",
+            "t": r["t"],
+            "e": r["e"][0],
+            "u": r["u"][0],
+        }
         for j in range(r["xt_err"].shape[1]):
             d[f"est_err_d{j}"] = r["xt_err"][0, j]
         frames.append(pd.DataFrame(d))
     for amp in amplitudes:
         r = run(settings5[1], float(amp))
-        frames.append(pd.DataFrame({"figure": "I.17-I.19", "case": f"amplitude {amp:g}",
-                                    "t": r["t"], "e": r["e"][0], "u": r["u"][0]}))  # fmt: skip
+        frames.append(
+            pd.DataFrame(
+                {
+                    "figure": "I.17-I.19",
+                    "case": f"amplitude {amp:g}",
+                    "t": r["t"],
+                    "e": r["e"][0],
+                    "u": r["u"][0],
+                }
+            )
+        )
     return pd.concat(frames, ignore_index=True)
 
 
@@ -120,10 +139,19 @@ def kalman_sweep_table(stats, figs, grid) -> pd.DataFrame:
         for vw in vws:
             for w in grid:
                 s = stats(order, vw, wkey, float(w))
-                rows.append({"figure": fig, "order": order, "q_over_r": qr, "v_w": vw,
-                             "omega": float(w), "e_max": s.e_med, "u_max": s.u_med,
-                             "e_q25": float(np.quantile(s.e, 0.25)),
-                             "e_q75": float(np.quantile(s.e, 0.75))})  # fmt: skip
+                rows.append(
+                    {
+                        "figure": fig,
+                        "order": order,
+                        "q_over_r": qr,
+                        "v_w": vw,
+                        "omega": float(w),
+                        "e_max": s.e_med,
+                        "u_max": s.u_med,
+                        "e_q25": float(np.quantile(s.e, 0.25)),
+                        "e_q75": float(np.quantile(s.e, 0.75)),
+                    }
+                )
     return pd.DataFrame(rows)
 
 

@@ -46,30 +46,50 @@ def checks_table(ctrl, q: float, r: float, v_v) -> pd.DataFrame:
     tm, c = ctrl.tm, ctrl
     rows = []
     p_are = scipy.linalg.solve_discrete_are(c.A, c.B, c.C.T @ [[q]] @ c.C, [[r]])
-    rows.append(("Riccati eq 2.12: iteration vs scipy solve_discrete_are",
-                 np.max(np.abs(tm.P - p_are)) / np.max(np.abs(p_are))))  # fmt: skip
+    rows.append(
+        (
+            "Riccati eq 2.12: iteration vs scipy solve_discrete_are",
+            np.max(np.abs(tm.P - p_are)) / np.max(np.abs(p_are)),
+        )
+    )
     rows.append(("spectral radius of A_g (eq 2.16)", np.max(np.abs(np.linalg.eigvals(tm.Ag)))))
     rows.append(("||A_g||_2 (eq 2.32 assumes < 1)", np.linalg.norm(tm.Ag, 2)))
     at, ct, gt = taylor_model(5, ctrl.dt)
     rhs = tm.Cg @ ct @ at
     x1 = stein_solve(tm.Ag, at, rhs, "kron")
     x2 = stein_solve(tm.Ag, at, rhs, "sylvester")
-    rows.append(("Stein eq E.4 (order 5): Kronecker vs Bartels-Stewart, rel. diff",
-                 np.max(np.abs(x1 - x2)) / np.max(np.abs(x1))))  # fmt: skip
+    rows.append(
+        (
+            "Stein eq E.4 (order 5): Kronecker vs Bartels-Stewart, rel. diff",
+            np.max(np.abs(x1 - x2)) / np.max(np.abs(x1)),
+        )
+    )
     kt = preview_gain(tm, at, ct)
     for n in PREVIEW_STEPS:
-        rows.append((f"preview gain: |Kv X_n - Kv X| / |Kv X|, n = {n} steps (eq 2.37)",
-                     np.max(np.abs(preview_series(tm, at, ct, n) - kt)) / np.max(np.abs(kt))))  # fmt: skip
+        rows.append(
+            (
+                f"preview gain: |Kv X_n - Kv X| / |Kv X|, n = {n} steps (eq 2.37)",
+                np.max(np.abs(preview_series(tm, at, ct, n) - kt)) / np.max(np.abs(kt)),
+            )
+        )
     em = extended_model(c.A, c.B, c.C, at, ct, gt)
     kg = kalman_gains(em, 5e-10, v_v)
     n = em.n_antenna
     dual = scipy.linalg.solve_discrete_are(
         at.T, em.M[1:2, n:].T, 5e-10 * gt @ gt.T, np.atleast_2d(v_v[1, 1])
     )
-    rows.append(("Kalman eq 7.15 (order 5): object block vs dual DARE, rel. diff",
-                 np.max(np.abs(kg.Q[n:, n:] - dual)) / np.max(np.abs(dual))))  # fmt: skip
-    rows.append(("Kalman eq 7.15: largest |entry| of the antenna block (w = 0)",
-                 np.max(np.abs(kg.Q[:n, :n]))))  # fmt: skip
+    rows.append(
+        (
+            "Kalman eq 7.15 (order 5): object block vs dual DARE, rel. diff",
+            np.max(np.abs(kg.Q[n:, n:] - dual)) / np.max(np.abs(dual)),
+        )
+    )
+    rows.append(
+        (
+            "Kalman eq 7.15: largest |entry| of the antenna block (w = 0)",
+            np.max(np.abs(kg.Q[:n, :n])),
+        )
+    )
     return pd.DataFrame([(k, float(v)) for k, v in rows], columns=["check", "value"])
 
 
@@ -116,7 +136,14 @@ def omega_sweep_table(controllers, r: float, sw) -> pd.DataFrame:
         for w in grid:
             for mode, order in [("known", None)] + [("predicted", o) for o in sw["orders"]]:
                 a = steady_state_amplitudes(ctrl, w, 1.0, mode, order)
-                rows.append({"q_over_r": q / r, "omega": float(w),
-                             "case": "known" if order is None else f"order {order}",
-                             "e_max": a["e"], "u_max": a["u"], "phase_e": a["phase_e"]})  # fmt: skip
+                rows.append(
+                    {
+                        "q_over_r": q / r,
+                        "omega": float(w),
+                        "case": "known" if order is None else f"order {order}",
+                        "e_max": a["e"],
+                        "u_max": a["u"],
+                        "phase_e": a["phase_e"],
+                    }
+                )
     return pd.DataFrame(rows)
