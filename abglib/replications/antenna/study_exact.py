@@ -19,12 +19,19 @@ __all__ = [
     "hamiltonian_eigenvalues",
     "log_grid",
     "omega_sweep_table",
+    "preview_steps",
     "taylor_table",
     "tracking_table",
 ]
 
-#: Preview lengths for the convergence check of the finite-preview gain (eq 2.37).
+#: Preview lengths for the convergence check of the finite-preview gain (eq 2.37), in steps
+#: of the nominal dt = 2 pi / 10 (scaled with the sample rate: the same preview *time*).
 PREVIEW_STEPS = (50, 100, 200, 400, 800, 1600)
+
+
+def preview_steps(dt: float) -> list[int]:
+    """:data:`PREVIEW_STEPS` at sample interval ``dt`` (the same preview horizons in time)."""
+    return [int(round(n * (2 * np.pi / 10) / dt)) for n in PREVIEW_STEPS]
 
 
 def log_grid(g) -> np.ndarray:
@@ -65,7 +72,7 @@ def checks_table(ctrl, q: float, r: float, v_v) -> pd.DataFrame:
         )
     )
     kt = preview_gain(tm, at, ct)
-    for n in PREVIEW_STEPS:
+    for n in preview_steps(ctrl.dt):
         rows.append(
             (
                 f"preview gain: |Kv X_n - Kv X| / |Kv X|, n = {n} steps (eq 2.37)",
