@@ -775,3 +775,23 @@ def test_every_claim_declares_the_inputs_it_reads():
         assert {"antenna.kalman.v_v", "antenna.kalman.vw_scale"} <= set(CLAIMS.depends_on(key))
     assert CLAIMS.depends_on("fig4.deviation_grows") == ()
     assert "antenna.samples_per_period" in CLAIMS.depends_on("fig9.third_w1")
+
+
+@claim_test(DOC, "ch9.finer_resolution")
+def test_finer_resolution(s):
+    from abglib.replications.antenna.study_estimation import n_steps_for
+
+    r = simulate_phases(
+        s.params, s.ctrl, amplitude=s.amp, omega=s.omega,
+        n_steps=n_steps_for(s.omega, s.dt, s.sim), phases=s.phases, mode="kalman", order=5,
+        v_w=s.vw_filter(s.vw_opt5), v_v=s.vv, resolution=s.res / 10,
+    )  # fmt: skip
+    sel = r["t"] >= s.transient
+    fine = np.median(np.abs(r["e"][:, sel]).max(axis=1))
+    coarse = direct_stats(s, 5, s.vw_opt5)[0]
+    assert value(s, "ch9.finer_resolution") is bool(coarse / fine > 1.2)
+
+
+@claim_test(DOC, "ch9.speed_error_small")
+def test_speed_error_not_attempted(s):
+    assert CLAIMS.compute(s, "ch9.speed_error_small").value is None

@@ -526,3 +526,23 @@ def _floor(s):
         f"smallest max error of every Kalman run of the study: "
         f"{m:.3g} (half the resolution {s.res / 2:g})",
     )
+
+
+@CLAIMS.claim("ch9.finer_resolution", depends_on=EST)
+def _finer(s):
+    e = amp_stats(s, s.amp).e_med
+    f = s.stats(5, s.vw_opt5, resolution=s.res / 10).e_med
+    thr = float(s.thresholds["considerable_ratio"])
+    return Result(
+        bool(e / f > thr),
+        f"normal track, optimal settings: max |e| {e:.3g} at resolution {s.res:g}, {f:.3g} at "
+        f"{s.res / 10:g} (same V_w and V_v; {MED})",
+    )
+
+
+@CLAIMS.claim("ch9.speed_error_small")
+def _speed(s):
+    return Result(
+        None,
+        "the functional with a speed-error term and its weights are not given; not attempted",
+    )

@@ -225,11 +225,14 @@ class AntennaStudy(Study):
     def _runs(self) -> dict:
         return {}
 
-    def stats(self, order, v_w, weight="q", omega=None, amplitude=None, keep=False) -> RunStats:
+    def stats(
+        self, order, v_w, weight="q", omega=None, amplitude=None, keep=False, resolution=None
+    ) -> RunStats:
         """Memoised phase-ensemble maxima of one closed-loop setting (printed V_w)."""
         omega = self.omega if omega is None else float(omega)
         amplitude = self.amp if amplitude is None else float(amplitude)
-        key = (order, float(v_w), weight, omega, amplitude)
+        res = self.res if resolution is None else float(resolution)
+        key = (order, float(v_w), weight, omega, amplitude, res)
         hit = self._runs.get(key)
         if hit is None or (keep and hit.run is None):
             hit = run_stats(
@@ -245,7 +248,7 @@ class AntennaStudy(Study):
                 order=order,
                 v_w=self.vw_filter(v_w),
                 v_v=self.vv,
-                resolution=self.res,
+                resolution=res,
             )
             self._runs[key] = hit
         return hit
