@@ -200,7 +200,7 @@ display(verdicts("Fig. I.4"))
 # %%
 display(Image(filename=figures["tracking"]))
 display(Image(filename=figures["omega_sweep"]))
-display(verdicts("Fig. I.5", "Fig. I.7", "Fig. I.8", "Fig. I.9", "Figs I.8"))
+display(verdicts("Fig. I.5", "Fig. I.7", "Fig. I.8", "Fig. I.9", "Figs I.8", "Sec. 6"))
 
 # %%
 w1 = {o: row(f"omega = 1, Q/R = 10^4, {o}-order") for o in ("second", "third", "fifth")}

@@ -130,8 +130,8 @@ def _antenna_kalman_sweep(t):
             c = d[d["v_w"] == vw]
             axes[row, 0].loglog(c["omega"], c["e_max"], marker=".", label=f"V_w = {vw:.0e}")
             axes[row, 1].loglog(c["omega"], c["u_max"], marker=".", label=f"V_w = {vw:.0e}")
-        axes[row, 0].set_title(f"Fig. {f} (a): max |e|", fontsize=8)
-        axes[row, 1].set_title(f"Fig. {f} (b): max |u|", fontsize=8)
+        axes[row, 0].set_title(f"Fig. {f} (a): max |e| (median over object phases)", fontsize=8)
+        axes[row, 1].set_title(f"Fig. {f} (b): max |u| (median over object phases)", fontsize=8)
         axes[row, 0].set_ylabel("max |e| (-)")
         axes[row, 1].set_ylabel("max |u| (-)")
         axes[row, 0].legend()
