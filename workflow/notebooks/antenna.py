@@ -36,7 +36,11 @@
 # one-ulp change moves one run's maximum |e| by up to a quarter
 # (`shared/notes/antenna-reproducibility.md`). Every maximum of chapter 8 and appendix H is
 # therefore the median over an ensemble of object phases z = α sin(ωt + φ_j) (φ_0 = 0 is
-# the printed track); the ensemble size is in the parameter table.
+# the printed track); the ensemble size is in the parameter table. The median removes the
+# chaos of single runs but not every last-bit dependence: the design matrices still differ
+# in the last bit between BLAS kernels, so the medians move by a few per cent between CPUs,
+# and a qualitative verdict whose statistic sits that close to its threshold (at the nominal
+# inputs or at one point of a sweep) can differ between machines.
 
 # %% tags=["parameters"]
 # Defaults for interactive use; the pipeline injects the real values after this cell.
