@@ -6,6 +6,8 @@ AN = config.get("antenna", {})
 if "antenna" in DOCS and not AN:
     raise WorkflowError("config lists antenna in docs but has no antenna section")
 
+# the study's tables (abglib.replications.antenna.study.TABLES); app. H's design-error
+# sweep is design_errors (robustness.csv is the claim model's sweep over assumed inputs)
 ANTENNA_TABLES = [
     "parameters",
     "checks",
@@ -15,7 +17,7 @@ ANTENNA_TABLES = [
     "vw_search",
     "kalman_runs",
     "kalman_sweep",
-    "robustness",
+    "design_errors",
     "stability",
     "abg",
 ]
@@ -23,19 +25,9 @@ ANTENNA_TABLES = [
 
 rule antenna_reproduce:
     input:
-        published=sorted(str(f) for f in (PUBLISHED / "antenna").glob("*.csv")),
+        published=published_tables_of("antenna"),
     output:
-        **{
-            t: report(
-                f"results/antenna/{t}.csv",
-                category="Tracking antenna",
-                subcategory="Tables",
-                labels={"table": t},
-            )
-            for t in ANTENNA_TABLES
-        },
-        reproduced="results/antenna/reproduced.csv",
-        alternatives="results/antenna/alternatives.csv",
+        **reproduce_outputs("antenna", ANTENNA_TABLES),
     log:
         "logs/antenna/reproduce.log",
     benchmark:
@@ -44,10 +36,15 @@ rule antenna_reproduce:
         "../envs/abglib.yaml"
     params:
         library=LIBRARY_HASH,
-        cfg=AN,
+        doc="antenna",
+        cfg=doc_config("antenna"),
+        overrides=config["tolerance_overrides"].get("antenna", {}),
         digits=config["significant_digits"],
     script:
-        "../scripts/antenna.py"
+        "../scripts/reproduce.py"
+
+
+ruleorder: antenna_reproduce > comparison
 
 
 rule antenna_figures:

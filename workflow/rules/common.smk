@@ -130,6 +130,8 @@ REPORT_CONTENT = {
             "abg",
             "omega_sweep",
             "kalman_sweep",
+            "design_errors",
+            "taylor",
             "robustness",
         ],
     },

@@ -1,4 +1,4 @@
-"""Draw the tracking-antenna report's figures (seed 004) from the tables of antenna.py."""
+"""Draw the tracking-antenna figures (seed 004) from the tables of rule antenna_reproduce."""
 
 import pandas as pd
 

@@ -14,6 +14,14 @@ report). One module per concept:
 ``kalman``       predictor-form Kalman filter on the extended model (ch. 7, app. F-G)
 ``closedloop``   simulations of chapters 6 and 8, appendix H robustness, and the
                  fixed-gain alpha-beta-gamma object estimator (beyond the source)
+``ensemble``     the quantised closed loop over an ensemble of object phases (compiled):
+                 maxima under quantisation are judged on their median (the loop is chaotic)
+``study``        :class:`AntennaStudy`, the reconstructed setting and every report table;
+                 pieces per chapter in ``study_exact`` (ch. 2-6), ``study_estimation``
+                 (ch. 8), ``study_apph`` (app. H), ``study_abg`` (beyond the source)
+``claims``       ``CLAIMS``/``STUDY`` for :func:`abglib.replications.reproduce`; one
+                 declaration per published key in ``claims_exact``, ``claims_estimation``,
+                 ``claims_apph``; the assumed inputs they depend on in ``_claimset``
 """
 
 from .closedloop import *  # noqa: F403

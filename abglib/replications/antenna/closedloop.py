@@ -79,8 +79,12 @@ class Controller:
 
 
 def design_controller(params: AntennaParams, dt: float, q: float, r: float) -> Controller:
-    """LQ tracker of the antenna with scalar weights ``Q``, ``R`` (ch. 2, 6)."""
-    dt = float(check_positive("dt", dt))
+    """LQ tracker of the antenna with scalar weights ``Q``, ``R`` (ch. 2, 6), memoised."""
+    return _design_controller(params, float(check_positive("dt", dt)), float(q), float(r))
+
+
+@lru_cache(maxsize=1024)
+def _design_controller(params: AntennaParams, dt: float, q: float, r: float) -> Controller:
     a, b, c = discrete_plant(params, dt)
     tm = tracker_matrices(a, b, c, [[q]], [[r]])
     return Controller(params=params, dt=dt, tm=tm, A=a, B=b, C=c)

@@ -6,7 +6,7 @@ import numpy as np
 
 from ...reporting.plotting import _STYLE, plt
 
-__all__ = ['antenna_figure']
+__all__ = ["antenna_figure"]
 
 
 _ANTENNA_NOTE = "reconstructed model: the parameter values are lost in the scan"
@@ -24,7 +24,10 @@ def _antenna_sweep_axes(fig_title, nrows=1, ncols=2, figsize=(9.0, 4.0)):
 def _antenna_taylor(t):
     fig, ax = _antenna_sweep_axes(
         "Replicates Fig. I.4: Taylor prediction of z = sin(i/100) from i = 50 (Δt = 0.01)",
-        1, 1, (7.0, 4.5))
+        1,
+        1,
+        (7.0, 4.5),
+    )
     ax = ax[0, 0]
     ax.plot(t["i"], t["z"], "k", lw=2.0, label="real position")
     for c in [c for c in t.columns if c.startswith("order")]:
@@ -41,14 +44,17 @@ def _antenna_tracking(t):
     fig, axes = _antenna_sweep_axes(
         "Replicates Figs I.5-I.7: tracking error e = y - z, z = 10 sin(0.1 t), Q/R = 100 "
         f"(known output and orders of prediction; {_ANTENNA_NOTE})",
-        (len(cases) + 1) // 2, 2, (9.0, 1.9 * ((len(cases) + 1) // 2)))
+        (len(cases) + 1) // 2,
+        2,
+        (9.0, 1.9 * ((len(cases) + 1) // 2)),
+    )
     for ax, case in zip(axes.flat, cases, strict=False):
         d = t[t["case"] == case]
         ax.plot(d["t"], d["e"], lw=0.9)
         ax.set_title(case if case != "known" else "known desired output (Fig. I.5)", fontsize=8)
         ax.set_ylabel("e (-)")
         ax.set_xlabel("dimensionless time t")
-    for ax in axes.flat[len(cases):]:
+    for ax in axes.flat[len(cases) :]:
         ax.set_visible(False)
     fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig
@@ -58,7 +64,11 @@ def _antenna_omega_sweep(t):
     qrs = sorted(t["q_over_r"].unique())
     fig, axes = _antenna_sweep_axes(
         "Replicates Figs I.8 (Q/R = 100) and I.9 (Q/R = 10^4): steady-state maximum tracking "
-        f"error and control against ω, amplitude 1 ({_ANTENNA_NOTE})", 2, 2, (9.0, 7.0))
+        f"error and control against ω, amplitude 1 ({_ANTENNA_NOTE})",
+        2,
+        2,
+        (9.0, 7.0),
+    )
     for row, qr in enumerate(qrs):
         d = t[t["q_over_r"] == qr]
         for case in dict.fromkeys(d["case"]):
@@ -80,13 +90,19 @@ def _antenna_omega_sweep(t):
 def _antenna_kalman_vw(t):
     d = t[t["figure"] == "I.10-I.13"]
     cases = list(dict.fromkeys(d["case"]))
-    panels = [("est_err_d0", "position estimation error (Fig. I.10)"),
-              ("est_err_d1", "speed estimation error (Fig. I.11)"),
-              ("est_err_d2", "acceleration estimation error (Fig. I.12)"),
-              ("e", "tracking error (Fig. I.13)")]
+    panels = [
+        ("est_err_d0", "position estimation error (Fig. I.10)"),
+        ("est_err_d1", "speed estimation error (Fig. I.11)"),
+        ("est_err_d2", "acceleration estimation error (Fig. I.12)"),
+        ("e", "tracking error (Fig. I.13)"),
+    ]
     fig, axes = _antenna_sweep_axes(
         "Replicates Figs I.10-I.13: fifth-order model, normal track, three V_w settings "
-        f"({_ANTENNA_NOTE})", 4, len(cases), (10.0, 8.5))
+        f"({_ANTENNA_NOTE})",
+        4,
+        len(cases),
+        (10.0, 8.5),
+    )
     for j, case in enumerate(cases):
         c = d[d["case"] == case]
         for i, (col, lab) in enumerate(panels):
@@ -103,16 +119,19 @@ def _antenna_kalman_sweep(t):
     figs = list(dict.fromkeys(t["figure"]))
     fig, axes = _antenna_sweep_axes(
         "Replicates Figs I.14 (5th order, Q/R = 100), I.15 (5th, 10^4), I.16 (3rd, 100): "
-        f"with Kalman estimation, amplitude 10 ({_ANTENNA_NOTE})", len(figs), 2,
-        (9.0, 3.0 * len(figs)))
+        f"with Kalman estimation, amplitude 10 ({_ANTENNA_NOTE})",
+        len(figs),
+        2,
+        (9.0, 3.0 * len(figs)),
+    )
     for row, f in enumerate(figs):
         d = t[t["figure"] == f]
         for vw in dict.fromkeys(d["v_w"]):
             c = d[d["v_w"] == vw]
             axes[row, 0].loglog(c["omega"], c["e_max"], marker=".", label=f"V_w = {vw:.0e}")
             axes[row, 1].loglog(c["omega"], c["u_max"], marker=".", label=f"V_w = {vw:.0e}")
-        axes[row, 0].set_title(f"Fig. {f} (a): max |e|", fontsize=8)
-        axes[row, 1].set_title(f"Fig. {f} (b): max |u|", fontsize=8)
+        axes[row, 0].set_title(f"Fig. {f} (a): max |e| (median over object phases)", fontsize=8)
+        axes[row, 1].set_title(f"Fig. {f} (b): max |u| (median over object phases)", fontsize=8)
         axes[row, 0].set_ylabel("max |e| (-)")
         axes[row, 1].set_ylabel("max |u| (-)")
         axes[row, 0].legend()
@@ -127,7 +146,11 @@ def _antenna_amplitude(t):
     cases = list(dict.fromkeys(d["case"]))
     fig, axes = _antenna_sweep_axes(
         "Replicates Figs I.17-I.19: optimal settings (5th order, Q/R = 100), ω = 0.1, "
-        f"amplitudes 10, 100, 1 ({_ANTENNA_NOTE})", len(cases), 2, (9.0, 2.4 * len(cases)))
+        f"amplitudes 10, 100, 1 ({_ANTENNA_NOTE})",
+        len(cases),
+        2,
+        (9.0, 2.4 * len(cases)),
+    )
     for row, case in enumerate(cases):
         c = d[d["case"] == case]
         axes[row, 0].plot(c["t"], c["e"], lw=0.7)
@@ -146,7 +169,11 @@ def _antenna_robustness(t):
     names = list(dict.fromkeys(t["parameter"]))
     fig, axes = _antenna_sweep_axes(
         "Replicates Figs I.20 (β_d), I.21 (β_a), I.22 (p_a) and app. H's p_f, β_f, κ: "
-        f"design value / real value ({_ANTENNA_NOTE})", 2, 3, (10.0, 6.0))
+        f"design value / real value ({_ANTENNA_NOTE})",
+        2,
+        3,
+        (10.0, 6.0),
+    )
     for ax, name in zip(axes.flat, names, strict=False):
         d = t[t["parameter"] == name]
         e = d["e_max"].replace(np.inf, np.nan).clip(upper=1e3)
@@ -169,7 +196,10 @@ def _antenna_robustness(t):
 def _antenna_abg(t):
     fig, axes = _antenna_sweep_axes(
         "Beyond the source: critically damped α-β-γ with the ENBW of a Kalman object predictor "
-        f"instead of that Kalman filter, amplitude 10, Q/R = 100 ({_ANTENNA_NOTE})", 1, 2)
+        f"instead of that Kalman filter, amplitude 10, Q/R = 100 ({_ANTENNA_NOTE})",
+        1,
+        2,
+    )
     curves = [
         ("kalman5", "Kalman, 5th-order model", dict(color="C0")),
         ("abg5", "α-β-γ, ENBW of the 5th-order Kalman", dict(color="C0", ls="--")),
@@ -195,7 +225,7 @@ _ANTENNA_FIGURES = {
     "kalman_vw": ("kalman_runs", _antenna_kalman_vw),
     "kalman_sweep": ("kalman_sweep", _antenna_kalman_sweep),
     "amplitude": ("kalman_runs", _antenna_amplitude),
-    "robustness": ("robustness", _antenna_robustness),
+    "robustness": ("design_errors", _antenna_robustness),
     "abg": ("abg", _antenna_abg),
 }
 

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg
+from numba import njit
 
 from ..._checks import AbglibValueError, check_positive
 
@@ -56,11 +57,6 @@ def extended_model(a, b, c, at, ct, gt) -> ExtendedModel:
     return ExtendedModel(A=ae, B=be, M=m, G=g, n_antenna=n)
 
 
-def _scaled_change(new, old):
-    d = np.sqrt(np.clip(np.diag(new), 1e-300, None))
-    return np.max(np.abs(new - old) / np.outer(d, d))
-
-
 def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
     """Solve eq 7.15 by iterating it from ``Q = Vw``.
 
@@ -79,15 +75,34 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
         1.0, np.abs(vw).max()
     ):
         raise AbglibValueError("V_w must be symmetric positive semidefinite")
+    qn, ok = _kalman_iterate(
+        np.ascontiguousarray(a, dtype=float),
+        np.ascontiguousarray(m, dtype=float),
+        np.ascontiguousarray(vw),
+        np.ascontiguousarray(vv),
+        float(tol),
+        int(max_iter),
+    )
+    if not ok:
+        raise AbglibValueError(f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}")
+    return qn
+
+
+@njit(cache=True)
+def _kalman_iterate(a, m, vw, vv, tol, max_iter):
+    # the iteration of kalman_riccati, compiled (the same formulas, step by step)
     q = vw.copy()
-    for _ in range(int(max_iter)):
-        s = m @ q @ m.T + vv
-        qn = vw + a @ (q - q @ m.T @ np.linalg.solve(s, m @ q)) @ a.T
+    mt = np.ascontiguousarray(m.T)
+    at = np.ascontiguousarray(a.T)
+    for _ in range(max_iter):
+        s = m @ q @ mt + vv
+        qn = vw + a @ (q - q @ mt @ np.linalg.solve(s, m @ q)) @ at
         qn = 0.5 * (qn + qn.T)
-        if _scaled_change(qn, q) < tol:
-            return qn
+        d = np.sqrt(np.maximum(np.diag(qn), 1e-300))
+        if np.max(np.abs(qn - q) / np.outer(d, d)) < tol:
+            return qn, True
         q = qn
-    raise AbglibValueError(f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}")
+    return q, False
 
 
 @dataclass(frozen=True)

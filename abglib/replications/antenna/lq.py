@@ -16,6 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from ..._checks import AbglibValueError, check_positive
 
@@ -59,15 +60,34 @@ def riccati_iterate(a, b, qx, r, tol=1e-13, max_iter=200000):
         If the iteration has not converged after ``max_iter`` steps.
     """
     p = np.array(qx, dtype=float)
-    rinv_bt = np.linalg.solve(r, b.T)
+    rinv_bt = np.ascontiguousarray(np.linalg.solve(r, b.T))
+    p, ok = _riccati_loop(
+        np.ascontiguousarray(a, dtype=float),
+        np.ascontiguousarray(b, dtype=float),
+        rinv_bt,
+        np.ascontiguousarray(qx, dtype=float),
+        p,
+        float(tol),
+        int(max_iter),
+    )
+    if not ok:
+        raise AbglibValueError(f"Riccati iteration (eq 2.12) did not converge in {max_iter} steps")
+    return p
+
+
+@njit(cache=True)
+def _riccati_loop(a, b, rinv_bt, qx, p, tol, max_iter):
+    # the iteration of riccati_iterate, compiled (the same formulas, step by step)
     n = a.shape[0]
-    for _ in range(int(max_iter)):
-        p_new = qx + a.T @ p @ np.linalg.solve(np.eye(n) + b @ rinv_bt @ p, a)
+    at = np.ascontiguousarray(a.T)
+    brb = b @ rinv_bt
+    for _ in range(max_iter):
+        p_new = qx + at @ p @ np.linalg.solve(np.eye(n) + brb @ p, a)
         p_new = 0.5 * (p_new + p_new.T)
         if np.max(np.abs(p_new - p)) <= tol * max(1.0, np.max(np.abs(p_new))):
-            return p_new
+            return p_new, True
         p = p_new
-    raise AbglibValueError(f"Riccati iteration (eq 2.12) did not converge in {max_iter} steps")
+    return p, False
 
 
 @dataclass(frozen=True)

@@ -28,7 +28,7 @@ def spectral_radius(nominal: AntennaParams, name, factor, dt, q, r, order, v_w, 
     return float(np.max(np.abs(np.linalg.eigvals(big))))
 
 
-def stable_interval(nominal, name, dt, q, r, order, v_w, v_v, grid, tol=1e-9):
+def stable_interval(nominal, name, dt, q, r, order, v_w, v_v, grid, tol=1e-9, radius=None):
     """Largest interval of factors around 1 with radius <= 1 + tol, refined by bisection.
 
     Parameters
@@ -37,14 +37,22 @@ def stable_interval(nominal, name, dt, q, r, order, v_w, v_v, grid, tol=1e-9):
         Increasing factors containing values on both sides of 1; the edges are located
         between grid points and refined with :func:`scipy.optimize.brentq`.
 
+    radius : callable, optional
+        ``radius(factor)``, a (memoised) :func:`spectral_radius` of the same setting.
+
     Returns
     -------
     (lower, upper) : floats; ``nan`` where the loop stays stable to the end of the grid.
     """
     grid = np.asarray(grid, dtype=float)
 
+    if radius is None:
+
+        def radius(f):
+            return spectral_radius(nominal, name, f, dt, q, r, order, v_w, v_v)
+
     def excess(f):
-        return spectral_radius(nominal, name, f, dt, q, r, order, v_w, v_v) - 1.0 - tol
+        return radius(f) - 1.0 - tol
 
     ex = np.array([excess(f) for f in grid])
     i1 = int(np.argmin(np.abs(grid - 1.0)))
