@@ -20,6 +20,7 @@ from .._checks import AbglibValueError
 from . import metrics, variants
 
 __all__ = [
+    "cell_dataset",
     "check_cell",
     "league_table",
     "n_vrf_checks",
@@ -276,3 +277,14 @@ def tradeoff_sweep(
     return pd.DataFrame(
         rows, columns=["scenario", "family", "parameter", "value", "noise_rms", "lag_rms", "rmse"]
     )
+
+
+def cell_dataset(parquet, scenario: str, spec: Mapping, runs=None, seed=None):
+    """The dataset of one benchmark cell: the stored Parquet file, or, when the config
+    overrides the Monte Carlo size (``benchmark.runs``), the scenario regenerated from its
+    spec with that many runs and the seed ``seed``."""
+    from . import datasets
+
+    if runs:
+        return datasets.generate(scenario, {**spec, "runs": int(runs)}, seed=int(seed))
+    return datasets.read(parquet)

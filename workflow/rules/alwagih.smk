@@ -48,9 +48,6 @@ rule alwagih_reproduce:
         "../scripts/reproduce.py"
 
 
-ruleorder: alwagih_reproduce > comparison
-
-
 rule alwagih_figures:
     input:
         tracks="results/alwagih/tracks.csv",

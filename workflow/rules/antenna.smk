@@ -44,9 +44,6 @@ rule antenna_reproduce:
         "../scripts/reproduce.py"
 
 
-ruleorder: antenna_reproduce > comparison
-
-
 rule antenna_figures:
     input:
         **{t: f"results/antenna/{t}.csv" for t in ANTENNA_TABLES},

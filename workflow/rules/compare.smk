@@ -1,31 +1,5 @@
-# Published versus reproduced (CONTRACTS.md §3): one comparison table per document and the
-# scorecard.
-
-
-rule comparison:
-    input:
-        published=published_tables,
-        reproduced="results/{doc}/reproduced.csv",
-        alternatives="results/{doc}/alternatives.csv",
-    output:
-        comparison=report(
-            "results/{doc}/comparison.csv",
-            category="Comparison",
-            labels={"document": "{doc}"},
-        ),
-    log:
-        "logs/compare/{doc}.log",
-    benchmark:
-        "benchmarks/results/compare/{doc}.tsv"
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        library=LIBRARY_HASH,
-        doc="{doc}",
-        overrides=lambda wildcards: config["tolerance_overrides"].get(wildcards.doc, {}),
-        digits=config["significant_digits"],
-    script:
-        "../scripts/compare.py"
+# The scorecard (CONTRACTS.md §3): one row per document, from the comparison tables that
+# each document's <doc>_reproduce rule writes.
 
 
 rule scorecard:

@@ -34,9 +34,6 @@ rule faa_bendix_reproduce:
         "../scripts/reproduce.py"
 
 
-ruleorder: faa_bendix_reproduce > comparison
-
-
 rule faa_bendix_figures:
     input:
         responses="results/faa_bendix/responses.csv",

@@ -37,9 +37,6 @@ rule huang_reproduce:
         "../scripts/reproduce.py"
 
 
-ruleorder: huang_reproduce > comparison
-
-
 rule huang_figures:
     input:
         bandwidth_curves="results/huang/bandwidth_curves.csv",

@@ -84,9 +84,6 @@ rule steelman1978_reproduce:
         "../scripts/reproduce.py"
 
 
-ruleorder: steelman1978_reproduce > comparison
-
-
 rule steelman_report:
     input:
         notebook=str(NOTEBOOKS / "steelman1978.py"),

@@ -14,14 +14,6 @@ import pandas as pd
 from abglib.reporting.pipeline import log_to
 
 
-def load(parquet, scenario, spec, runs, seed):
-    from abglib.bench import datasets
-
-    if runs:
-        return datasets.generate(scenario, {**spec, "runs": int(runs)}, seed=int(seed))
-    return datasets.read(parquet)
-
-
 def cell_table(dataset, variant, params) -> pd.DataFrame:
     from abglib.bench.benchmark import run_cell
 
@@ -37,11 +29,13 @@ def cell_table(dataset, variant, params) -> pd.DataFrame:
 
 
 def main(input, output, params, wildcards, logger) -> None:
-    from abglib.bench.benchmark import check_cell
+    from abglib.bench.benchmark import cell_dataset, check_cell
     from abglib.bench.metrics import fail_threshold
     from abglib.reporting.compare import write_csv
 
-    ds = load(input.parquet, wildcards.scenario, params.scenario_spec, params.runs, params.seed)
+    ds = cell_dataset(
+        input.parquet, wildcards.scenario, params.scenario_spec, params.runs, params.seed
+    )
     logger.info("%s on %s: %d runs x %d samples", wildcards.variant, ds.name, ds.runs, ds.n_samples)
     cell = cell_table(ds, wildcards.variant, params)
     threshold = fail_threshold(ds.runs, int(params.family_size), float(params.family_alpha))
