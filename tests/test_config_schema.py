@@ -100,3 +100,21 @@ def test_snakemake_reports_the_bad_key(tmp_path):
     text = out.stdout + out.stderr
     assert "config key 'steelman1978.figures.fig1.axes'" in text
     assert "['linear', 'bode']" in text
+
+
+def test_small_config_declares_the_same_plausible_ranges():
+    """The small config is used alone (--configfile replaces config.yaml): its documents must
+    judge robustness over the same ranges as the release config."""
+    root = Path(__file__).resolve().parents[1]
+    big = yaml.safe_load((root / "config.yaml").read_text(encoding="utf-8"))
+    small = yaml.safe_load((root / "tests" / "data" / "config_small.yaml").read_text())
+    for doc in small["docs"]:
+        ranges = {
+            k: {kk: vv for kk, vv in v.items() if kk != "basis"}
+            for k, v in big[doc].get("plausible", {}).items()
+        }
+        got = {
+            k: {kk: vv for kk, vv in v.items() if kk != "basis"}
+            for k, v in small[doc].get("plausible", {}).items()
+        }
+        assert got == ranges, doc
