@@ -33,6 +33,7 @@ from ..analysis._statespace import state_space
 from ..conventions import from_filterpy, to_filterpy
 from ..engine import track
 from ..gains import Gains
+from ..reporting.compare import with_precision
 
 __all__ = ["GAIN_SETS", "agreement_table", "direct_vrf", "monte_carlo_vrf"]
 
@@ -432,4 +433,5 @@ def agreement_table(rtol: float = 1e-9, seed: int = 0) -> pd.DataFrame:
     rows += _helper_rows(rtol)
     df = pd.DataFrame(rows)
     df.loc[df["agree"] & (df["supports"] == ""), "supports"] = "both"
-    return df
+    # agreements are round-off: relative differences below 1e-12 are written as the bound
+    return with_precision(df, rel_diff="<1e-12", alternative_rel_diff="<1e-12")

@@ -50,8 +50,11 @@ __all__ = [
     "VERDICTS",
     "Alternative",
     "build_comparison",
+    "ROUNDOFF",
     "format_cell",
     "format_number",
+    "roundoff",
+    "with_precision",
     "format_table",
     "judge",
     "parse_printed",
@@ -153,6 +156,21 @@ def format_number(x, digits: int = SIGNIFICANT_DIGITS) -> str:
     return f"{xf:.{digits}g}"
 
 
+#: Below this relative size a difference between two exact routes is floating-point
+#: round-off: it moves with the BLAS kernel and the summation order, so it is written as
+#: this bound (notes: :func:`roundoff`; tables: precision ``"<1e-12"``), never as digits.
+ROUNDOFF = 1e-12
+
+
+def roundoff(x, digits: int = 3, bound: float = ROUNDOFF) -> str:
+    """A difference for a note: ``'< 1e-12'`` when it is round-off, else ``digits``
+    significant digits (e.g. a misprint's relative error ``'0.134'``)."""
+    xf = float(x)
+    if math.isfinite(xf) and abs(xf) < bound:
+        return f"< {bound:g}"
+    return format_number(xf, digits)
+
+
 def format_cell(x, spec) -> str:
     """Format one number under a column's declared precision.
 
@@ -176,6 +194,15 @@ def format_cell(x, spec) -> str:
                 return f"<{bound}"
         return format_number(x, int(n) if n else SIGNIFICANT_DIGITS)
     return format_number(x, int(spec))
+
+
+def with_precision(df: pd.DataFrame, **columns) -> pd.DataFrame:
+    """``df`` (a shallow copy) declaring the precision of some of its columns, e.g.
+    ``with_precision(t, rel_diff="<1e-12", pole_radius=4)`` (:func:`format_cell`);
+    :func:`write_csv` writes them so."""
+    out = df.copy(deep=False)
+    out.attrs = {**df.attrs, "precision": {**df.attrs.get("precision", {}), **columns}}
+    return out
 
 
 def format_table(

@@ -11,7 +11,7 @@ import re
 
 import numpy as np
 
-from ...reporting.compare import tolerance_from_printed
+from ...reporting.compare import roundoff, tolerance_from_printed
 from .._claims import ClaimSet, Reading, Result
 from . import program as bendix
 from .study import FaaBendixStudy
@@ -33,7 +33,7 @@ def _equations(s: FaaBendixStudy) -> Result:
     return Result(
         worst <= 1e-12,
         f"largest |literal program - abglib.track(init='zero')| over {n} runs x 3 graphs: "
-        f"{worst:.1e}",
+        f"{roundoff(worst)}",
     )
 
 

@@ -23,6 +23,7 @@ from ...analysis import (
 from ...conventions import from_huang, to_huang
 from ...engine import track
 from ...gains import Gains
+from ...reporting.compare import roundoff
 from .._claims import ClaimSet, Reading, Result
 from .printed import (
     bandwidth_for_sigma,
@@ -151,7 +152,7 @@ def _eq2(s: HuangStudy) -> Result:
     d_printed = float(np.max(np.abs(printed - trk)))
     return Result(
         bool(d_printed < 1e-9),
-        f"with T^2 R''/2 the literal eqs 1-2 equal abglib.track to {d_half:.1e}; with "
+        f"with T^2 R''/2 the literal eqs 1-2 equal abglib.track to {roundoff(d_half)}; with "
         f"T^2 R'' as printed they differ by up to {d_printed:.3g} (unit noise input, gains "
         f"{'/'.join(f'{g:g}' for g in _EQ12_GAINS)}): eq 2 misprints T^2 R''/2 (and T R'_s "
         "for T R''_s in its second line); section 1",
@@ -173,7 +174,9 @@ def _eq3(s: HuangStudy) -> Result:
         (transfer_function_huang(a, b, gh), transfer_function(from_huang(a, b, gh), "x_pred"))
         for a, b, gh in sets
     )
-    return Result(bool(gap < 1e-12), f"largest coefficient difference {gap:.1e} ({len(sets)} sets)")
+    return Result(
+        bool(gap < 1e-12), f"largest coefficient difference {roundoff(gap)} ({len(sets)} sets)"
+    )
 
 
 @CLAIMS.claim("eq6.transfer")
@@ -184,7 +187,9 @@ def _eq6(s: HuangStudy) -> Result:
         (transfer_function_huang(a, b, 0.0), transfer_function(Gains(a, b), "x_pred"))
         for a, b, _ in sets
     )
-    return Result(bool(gap < 1e-12), f"largest coefficient difference {gap:.1e} ({len(sets)} sets)")
+    return Result(
+        bool(gap < 1e-12), f"largest coefficient difference {roundoff(gap)} ({len(sets)} sets)"
+    )
 
 
 @CLAIMS.claim("eq6.special_case")
@@ -206,7 +211,8 @@ def _eq6_special(s: HuangStudy) -> Result:
     return Result(
         bool(max(worst, worst_rem) < 1e-12),
         f"at gamma = 0 eq 3's numerator and denominator share the factor (z - 1) (remainder "
-        f"{worst_rem:.1e}); the quotient is eq 6 to {worst:.1e} ({len(sets)} seeded sets)",
+        f"{roundoff(worst_rem)}); the quotient is eq 6 to {roundoff(worst)} "
+        f"({len(sets)} seeded sets)",
     )
 
 
@@ -259,7 +265,7 @@ def _eq14(s: HuangStudy) -> Result:
     )
     return Result(
         bool(rel < 1e-9),
-        f"largest relative difference from the exact (Lyapunov) ENBW {rel:.1e} "
+        f"largest relative difference from the exact (Lyapunov) ENBW {roundoff(rel, bound=1e-9)} "
         "(Tables 1-2 and the Figs 2-3 grids)",
     )
 
@@ -274,7 +280,8 @@ def _eq12(s: HuangStudy) -> Result:
     return Result(
         bool(rel < 1e-5),
         f"the partial fractions of eqs 11-12 (constant K2/K5, bracket A/sqrt(B) + C/sqrt(D) + "
-        f"E/sqrt(F)) agree with the exact ENBW to {rel:.1e} relative on {len(ok)} of the "
+        f"E/sqrt(F)) agree with the exact ENBW to {roundoff(rel, bound=1e-5)} relative on "
+        f"{len(ok)} of the "
         f"{len(abg)} stable alpha-beta-gamma sets of Tables 1-2 (the others have repeated "
         "roots, which partial fractions cannot separate; nearly repeated ones cost digits, "
         "~eps^(1/3)); section 2",
@@ -303,7 +310,8 @@ def _eq13_derivable(s: HuangStudy) -> Result:
     )
     return Result(
         bool(rel < 1e-8),
-        f"the reconstructed eq 13 agrees with the exact ENBW to {rel:.1e} relative "
+        f"the reconstructed eq 13 agrees with the exact ENBW to {roundoff(rel, bound=1e-8)} "
+        "relative "
         "(Figs 2-3 grids and Tables 1-2)",
     )
 
@@ -320,7 +328,7 @@ def _type1(s: HuangStudy) -> Result:
     return Result(
         bool(worst < 1e-9),
         f"type I alpha-beta-gamma gains equal the steady-state Kalman gains of "
-        f"Gamma = [T^2/2, T, 1] to {worst:.1e} (q/r from 1e-6 to 1e3); type I alpha-beta is "
+        f"Gamma = [T^2/2, T, 1] to {roundoff(worst)} (q/r from 1e-6 to 1e3); type I alpha-beta is "
         "Benedict-Bordner (Kalata); section 4",
     )
 
@@ -333,7 +341,8 @@ def _type2(s: HuangStudy) -> Result:
             worst = max(worst, float(np.max(np.abs(poles(design.huang_type2(xi, order)) - xi))))
     return Result(
         bool(worst < 1e-4),
-        f"all poles within {worst:.1e} of z = xi (a triple root: numerical spread ~eps^(1/3))",
+        f"all poles within {roundoff(worst, bound=1e-4)} of z = xi (a triple root: numerical "
+        "spread ~eps^(1/3))",
     )
 
 

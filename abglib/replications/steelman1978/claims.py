@@ -11,6 +11,7 @@ import numpy as np
 
 from ... import analysis as A
 from ...gains import Gains
+from ...reporting.compare import roundoff
 from .._claims import ClaimSet, Reading, Result
 from .study import SteelmanStudy
 
@@ -242,7 +243,7 @@ def _equation(s: SteelmanStudy, key: str) -> Result:
     holds = bool(rows["holds"].astype(bool).all())
     note = (
         f"{len(rows)} gain sets ({', '.join(rows['case'])}); worst relative difference from the "
-        f"exact route {_f(float(rows['rel_diff'].max()), 3)}"
+        f"exact route {roundoff(float(rows['rel_diff'].max()))}"
     )
     matches = sorted({m for x in rows["matches"] for m in str(x).split(", ") if m})
     if not holds and matches:
@@ -487,7 +488,7 @@ def _fading(s: SteelmanStudy, key: str) -> Result:
         worst <= 1e3 * s.cfg["equation_checks"]["exact_rtol"],
         f"impulse response of the standard tracker against the weights of the exponentially "
         f"weighted least-squares {'parabola' if order == 3 else 'line'} (θ of eqs 22-24 / p. 5): "
-        f"max difference {_f(worst, 3)} at α = {', '.join(f'{a:g}' for a in errs)}; "
+        f"max difference {roundoff(worst)} at α = {', '.join(f'{a:g}' for a in errs)}; "
         f"see '{SEC_TEXT}'",
     )
 
