@@ -14,6 +14,7 @@ from abglib.reporting.compare import (
     scorecard,
     tolerance_from_printed,
     verdict,
+    with_precision,
     write_csv,
 )
 
@@ -254,3 +255,12 @@ def test_write_csv_uses_the_tables_declared_precision(tmp_path):
         write_csv(df, tmp_path / "u.csv")
     with pytest.raises(AbglibValueError, match="a precision must be digits"):
         write_csv(df, tmp_path / "v.csv", precision={"a": "1e-3"})
+
+
+def test_read_table_reads_bounds_as_zero(tmp_path):
+    from abglib.reporting.compare import read_table
+
+    df = pd.DataFrame({"name": ["a", "b"], "d": [0.25, 3e-16], "n": [1.5, 2.5]})
+    write_csv(with_precision(df, d="<1e-12"), tmp_path / "t.csv")
+    back = read_table(tmp_path / "t.csv")
+    assert back["d"].tolist() == [0.25, 0.0] and back["name"].tolist() == ["a", "b"]

@@ -55,6 +55,7 @@ __all__ = [
     "format_number",
     "roundoff",
     "with_precision",
+    "read_table",
     "format_table",
     "judge",
     "parse_printed",
@@ -203,6 +204,26 @@ def with_precision(df: pd.DataFrame, **columns) -> pd.DataFrame:
     out = df.copy(deep=False)
     out.attrs = {**df.attrs, "precision": {**df.attrs.get("precision", {}), **columns}}
     return out
+
+
+def read_table(path, **kwargs) -> pd.DataFrame:
+    """Read a table written by :func:`write_csv` for display: a column of numbers whose
+    round-off cells are written as a bound (``<1e-12``) is read as numbers, each bound as
+    0.0 (zero within round-off), so that the notebooks can format it."""
+    df = pd.read_csv(path, **kwargs)
+    for col in df.columns:
+        if not (df[col].dtype == object or pd.api.types.is_string_dtype(df[col])):
+            continue
+        text = df[col].dropna().astype(str)
+        bounds = text.str.startswith("<")
+        if not bounds.any():
+            continue
+        rest = pd.to_numeric(text[~bounds], errors="coerce")
+        bound_values = pd.to_numeric(text[bounds].str[1:], errors="coerce")
+        if rest.isna().any() or bound_values.isna().any():
+            continue
+        df[col] = pd.to_numeric(df[col].where(~df[col].astype(str).str.startswith("<"), "0"))
+    return df
 
 
 def format_table(

@@ -39,6 +39,8 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
+from abglib.reporting.compare import read_table
+
 pd.set_option("display.max_colwidth", 120)
 pd.set_option("display.precision", 4)
 pd.set_option("display.max_columns", 40)
@@ -46,7 +48,7 @@ pd.set_option("display.max_rows", 400)
 league = pd.read_csv(tables["league"])
 cells = pd.read_csv(tables["cells"])
 variants = pd.read_csv(tables["variants"])
-peers = pd.read_csv(tables["peers"])
+peers = read_table(tables["peers"])
 speed = pd.read_csv(tables["engine_speed"])
 n_var, n_sc = league["variant"].nunique(), league["scenario"].nunique()
 runs = sorted(league["runs"].unique().tolist())

@@ -46,7 +46,7 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
-from abglib.reporting.compare import non_matches, scorecard
+from abglib.reporting.compare import non_matches, read_table, scorecard
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 5)
@@ -55,7 +55,7 @@ pd.set_option("display.max_rows", 200)
 comparison = pd.read_csv(tables["comparison"], dtype={"published": str}, keep_default_na=False)
 tab = pd.read_csv(tables["tables12"])
 routes = pd.read_csv(tables["enbw_routes"])
-metrics = pd.read_csv(tables["track_metrics"])
+metrics = read_table(tables["track_metrics"])
 robustness = pd.read_csv(tables["robustness"], keep_default_na=False)
 curves = pd.read_csv(tables["bandwidth_curves"])
 thermal = pd.read_csv(tables["thermal"])

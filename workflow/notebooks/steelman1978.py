@@ -46,13 +46,13 @@ provenance = None
 import pandas as pd
 from IPython.display import Image, Markdown, display
 
-from abglib.reporting.compare import non_matches, scorecard
+from abglib.reporting.compare import non_matches, read_table, scorecard
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 6)
 comparison = pd.read_csv(tables["comparison"], dtype={"published": str}, keep_default_na=False)
 robustness = pd.read_csv(tables["robustness"], dtype=str, keep_default_na=False)
-equations = pd.read_csv(tables["equations"])
+equations = read_table(tables["equations"])
 stability = pd.read_csv(tables["stability"])
 gains = pd.read_csv(tables["gains"])
 design_example = pd.read_csv(tables["design_example"]).set_index("route")
