@@ -95,3 +95,15 @@ def test_release_copies_and_refuses_to_overwrite(tmp_path, capsys):
     assert (to / "doc" / "comparison.csv").read_text() == COMP  # untouched
     assert main(["release", str(build), "--to", str(to), "--force"]) == 0
     assert "0.2" in (to / "doc" / "comparison.csv").read_text()
+
+
+def test_partial_compares_only_the_builds_tables(tmp_path, capsys):
+    rel = _folder(tmp_path / "rel", extra="a\n1\n")
+    build = tmp_path / "build"
+    (build / "doc").mkdir(parents=True)
+    (build / "doc" / "comparison.csv").write_text(COMP)  # no index.html, no extra.csv
+    assert main(["verify", str(build), "--release", str(rel)]) == 2
+    assert main(["verify", str(build), "--release", str(rel), "--partial"]) == 0
+    assert "doc: 1 tables, 2 rows compared" in capsys.readouterr().out
+    (build / "doc" / "comparison.csv").write_text(COMP.replace("mismatch", "match"))
+    assert main(["verify", str(build), "--release", str(rel), "--partial"]) == 1
