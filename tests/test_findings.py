@@ -38,7 +38,8 @@ def test_placeholders_take_their_values_from_the_tables(tmp_path):
 @pytest.mark.parametrize(
     "text, match",
     [
-        ("{{huang/comparison | item=nope | reproduced}}", "0 rows with item = 'nope'"),
+        ("{{huang/comparison | item=nope | reproduced}}", "0 rows with item = .nope."),
+        ("{{huang/comparison | item=eq 14 & verdict=match | reproduced}}", "0 rows with item"),
         ("{{huang/comparison | item=eq 14 | nothing}}", "no column 'nothing'"),
         ("{{huang/comparison | item=eq 14 | verdict | .3g}}", "is not a number"),
         ("{{huang/missing | item=a | b}}", "no table"),

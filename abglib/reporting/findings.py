@@ -1,9 +1,9 @@
 """The README's findings, formatted from a release's tables (never typed by hand).
 
 ``docs/readme_findings.md`` is a template: prose with placeholders
-``{{<doc>/<table> | <column>=<value> | <column> | <format>}}`` (format optional, a Python
-format spec such as ``.3g``), resolved against ``reports/v<version>/<doc>/tables/
-<table>.csv``, and ``{{scorecard}}``, the scorecard as a Markdown table. The rendered
+``{{<doc>/<table> | <column>=<value>[ & <column>=<value>...] | <column> | <format>}}``
+(the conditions select one row; format optional, a Python format spec such as ``.3g``),
+resolved against ``reports/v<version>/<doc>/tables/<table>.csv``, and ``{{scorecard}}``, the scorecard as a Markdown table. The rendered
 text goes between the ``<!-- findings:start -->`` and ``<!-- findings:end -->`` markers
 of README.md (``abglib findings``); a test checks that the README holds exactly what the
 committed release renders to.
@@ -56,12 +56,15 @@ def _resolve(expr: str, release: Path) -> str:
     table, selector, column = parts[:3]
     fmt = parts[3] if len(parts) == 4 else ""
     doc, _, name = table.partition("/")
-    sel_col, _, sel_val = (s.strip() for s in selector.partition("="))
-    rows = [r for r in _rows(release / doc / "tables" / f"{name}.csv") if r.get(sel_col) == sel_val]
+    conditions = [tuple(x.strip() for x in c.split("=", 1)) for c in selector.split(" & ")]
+    rows = [
+        r
+        for r in _rows(release / doc / "tables" / f"{name}.csv")
+        if all(r.get(col) == val for col, val in conditions)
+    ]
     if len(rows) != 1:
-        raise AbglibValueError(
-            f"findings: {table} has {len(rows)} rows with {sel_col} = {sel_val!r}, need one"
-        )
+        where = " and ".join(f"{col} = {val!r}" for col, val in conditions)
+        raise AbglibValueError(f"findings: {table} has {len(rows)} rows with {where}, need one")
     if column not in rows[0]:
         raise AbglibValueError(f"findings: {table} has no column {column!r}")
     value = rows[0][column]
@@ -70,7 +73,7 @@ def _resolve(expr: str, release: Path) -> str:
             return format(float(value), fmt)
         except ValueError:
             raise AbglibValueError(
-                f"findings: {table} {sel_col}={sel_val!r}, {column} = {value!r} is not a number"
+                f"findings: {table} {selector!r}, {column} = {value!r} is not a number"
             ) from None
     return value
 
