@@ -3,10 +3,11 @@
 ``docs/readme_findings.md`` is a template: prose with placeholders
 ``{{<doc>/<table> | <column>=<value>[ & <column>=<value>...] | <column> | <format>}}``
 (the conditions select one row; format optional, a Python format spec such as ``.3g``),
-resolved against ``reports/v<version>/<doc>/tables/<table>.csv``, and ``{{scorecard}}``, the scorecard as a Markdown table. The rendered
-text goes between the ``<!-- findings:start -->`` and ``<!-- findings:end -->`` markers
-of README.md (``abglib findings``); a test checks that the README holds exactly what the
-committed release renders to.
+resolved against ``reports/v<version>/<doc>/tables/<table>.csv``, and ``{{scorecard}}``,
+the scorecard as a Markdown table. The rendered text goes between the
+``<!-- findings:start -->`` and ``<!-- findings:end -->`` markers of README.md
+(``abglib findings``); a test checks that the README holds exactly what the committed
+release renders to.
 """
 
 from __future__ import annotations
