@@ -158,3 +158,16 @@ def test_roundoff_notes_print_a_bound():
 
     assert roundoff(5.4e-14) == "< 1e-12"
     assert roundoff(9.58e-5) == "9.6e-05"
+
+
+def test_tracking_table_precision():
+    """y and e of the time series hold 5 digits above an absolute round-off of 1e-10."""
+    from abglib.replications.antenna.study_exact import TRACK_PRECISION, tracking_table
+    from abglib.reporting.compare import format_table
+
+    ctrl = design_controller(NOMINAL, DT, 100.0, 1.0)
+    d = tracking_table(NOMINAL, ctrl, 10.0, 0.1, {"duration": 20.0, "orders": [2]})
+    assert d.attrs["precision"] == {"y": TRACK_PRECISION, "e": TRACK_PRECISION}
+    out = format_table(d)
+    assert out.loc[0, "y"] == "0"  # the antenna at rest
+    assert out.loc[1, "y"] == f"{d.loc[1, 'y']:.5g}" and out.loc[1, "e"] == f"{d.loc[1, 'e']:.5g}"
