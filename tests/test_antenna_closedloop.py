@@ -105,3 +105,69 @@ def test_stable_interval_edges_are_where_the_radius_crosses():
         assert spectral_radius(NOMINAL, "p_a", edge, *args) == pytest.approx(1 + tol, abs=1e-5)
     assert spectral_radius(NOMINAL, "p_a", lo * 0.995, *args) > 1 + tol
     assert spectral_radius(NOMINAL, "p_a", hi * 1.005, *args) > 1 + tol
+
+
+# ----------------------------------------------------------------------------- written precision
+def test_wrap_phase_writes_both_sides_of_the_cut_alike():
+    """A phase at the branch cut (pi - 1e-9 on one BLAS kernel, -pi + 1e-9 on another, as
+    measured for the known-output case at Q/R = 10^4) is written the same."""
+    from abglib.replications.antenna.study_exact import PHASE_DIGITS, wrap_phase
+    from abglib.reporting.compare import format_cell
+
+    for eps in (0.0, 1e-12, 1e-9, 4e-5):
+        a = format_cell(wrap_phase(np.pi - eps), PHASE_DIGITS)
+        b = format_cell(wrap_phase(-np.pi + eps), PHASE_DIGITS)
+        assert a == b == "3.142"
+    # away from the cut the phase is unchanged
+    for ph in (-3.0, -1.479, 0.0, 0.6556, 3.0):
+        assert wrap_phase(ph) == ph
+
+
+def test_omega_sweep_precision_and_roundoff_phase():
+    """e_max is declared to hold 4 digits above its absolute round-off; below it e_max is
+    written as the bound and its phase (undefined) is left empty."""
+    from abglib.replications.antenna.study_exact import E_ROUNDOFF, omega_sweep_table
+    from abglib.reporting.compare import format_table
+
+    ctrl = design_controller(NOMINAL, DT, 1e4, 1.0)
+    d = omega_sweep_table({1e4: ctrl}, 1.0, {"start": 0.003, "stop": 1.0, "n": 3, "orders": [5]})
+    assert d.attrs["precision"] == {"e_max": f"<{E_ROUNDOFF:g}:4", "phase_e": 4}
+    small = d["e_max"] < E_ROUNDOFF
+    assert small.any() and not small.all()
+    assert d.loc[small, "phase_e"].isna().all() and d.loc[~small, "phase_e"].notna().all()
+    assert np.all(d["phase_e"].dropna() <= np.pi + 1e-3)
+    out = format_table(d)
+    assert (out.loc[small, "e_max"] == f"<{E_ROUNDOFF:g}").all()
+    assert (out.loc[small, "phase_e"] == "").all()
+
+
+def test_checks_roundoff_written_as_bound():
+    from abglib.replications.antenna.study_exact import checks_table
+    from abglib.reporting.compare import format_table
+
+    ctrl = design_controller(NOMINAL, DT, 100.0, 1.0)
+    d = checks_table(ctrl, 100.0, 1.0, 1e-3 * np.eye(2))
+    out = format_table(d).set_index("check")["value"]
+    assert out["Riccati eq 2.12: iteration vs scipy solve_discrete_are"] == "<1e-10"
+    assert out["Stein eq E.4 (order 5): Kronecker vs Bartels-Stewart, rel. diff"] == "<1e-10"
+    assert out["spectral radius of A_g (eq 2.16)"] == "0.944999"
+
+
+def test_roundoff_notes_print_a_bound():
+    from abglib.replications.antenna.claims_exact import roundoff
+
+    assert roundoff(5.4e-14) == "< 1e-12"
+    assert roundoff(9.58e-5) == "9.6e-05"
+
+
+def test_tracking_table_precision():
+    """y and e of the time series hold 5 digits above an absolute round-off of 1e-10."""
+    from abglib.replications.antenna.study_exact import TRACK_PRECISION, tracking_table
+    from abglib.reporting.compare import format_table
+
+    ctrl = design_controller(NOMINAL, DT, 100.0, 1.0)
+    d = tracking_table(NOMINAL, ctrl, 10.0, 0.1, {"duration": 20.0, "orders": [2]})
+    assert d.attrs["precision"] == {"y": TRACK_PRECISION, "e": TRACK_PRECISION}
+    out = format_table(d)
+    assert out.loc[0, "y"] == "<1e-10"  # the antenna at rest: below the round-off bound
+    assert out.loc[1, "y"] == f"{d.loc[1, 'y']:.5g}" and out.loc[1, "e"] == f"{d.loc[1, 'e']:.5g}"

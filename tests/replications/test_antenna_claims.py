@@ -808,3 +808,13 @@ def test_finer_resolution(s):
 @claim_test(DOC, "ch9.speed_error_small")
 def test_speed_error_not_attempted(s):
     assert CLAIMS.compute(s, "ch9.speed_error_small").value is None
+
+
+def test_stability_edges_written_at_their_precision(s):
+    """The edges are located to 1e-6 relative (brentq): the table declares 5 digits and the
+    edge claims return the edge rounded to them (the 7th digit moves with the BLAS kernel)."""
+    from abglib.replications.antenna.claims_apph import EDGE_DIGITS
+
+    assert s.stability.attrs["precision"] == {"lower": EDGE_DIGITS, "upper": EDGE_DIGITS}
+    lo = s.stability_of("p_a")["lower"]
+    assert value(s, "appH.p_a_lower") == float(f"{lo:.{EDGE_DIGITS}g}")

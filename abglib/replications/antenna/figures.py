@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pandas as pd
 
 from ...reporting.plotting import _STYLE, plt
 
@@ -40,6 +41,8 @@ def _antenna_taylor(t):
 
 
 def _antenna_tracking(t):
+    # e below its round-off is written as the bound '<1e-10': plotted as 0
+    t = t.assign(e=pd.to_numeric(t["e"], errors="coerce").fillna(0.0))
     cases = list(dict.fromkeys(t["case"]))
     fig, axes = _antenna_sweep_axes(
         "Replicates Figs I.5-I.7: tracking error e = y - z, z = 10 sin(0.1 t), Q/R = 100 "
@@ -61,6 +64,8 @@ def _antenna_tracking(t):
 
 
 def _antenna_omega_sweep(t):
+    # e_max below its round-off is written as the bound '<1e-10': not plotted
+    t = t.assign(e_max=pd.to_numeric(t["e_max"], errors="coerce"))
     qrs = sorted(t["q_over_r"].unique())
     fig, axes = _antenna_sweep_axes(
         "Replicates Figs I.8 (Q/R = 100) and I.9 (Q/R = 10^4): steady-state maximum tracking "

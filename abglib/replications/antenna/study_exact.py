@@ -22,6 +22,7 @@ __all__ = [
     "preview_steps",
     "taylor_table",
     "tracking_table",
+    "wrap_phase",
 ]
 
 #: Preview lengths for the convergence check of the finite-preview gain (eq 2.37), in steps
@@ -97,7 +98,13 @@ def checks_table(ctrl, q: float, r: float, v_v) -> pd.DataFrame:
             np.max(np.abs(kg.Q[:n, :n])),
         )
     )
-    return pd.DataFrame([(k, float(v)) for k, v in rows], columns=["check", "value"])
+    df = pd.DataFrame([(k, float(v)) for k, v in rows], columns=["check", "value"])
+    # the independent-route differences are round-off (the default OpenBLAS kernel and
+    # OPENBLAS_CORETYPE=Prescott give 2e-15 vs 5e-15, 5.4e-14 vs 5.2e-14, ...; the Kalman
+    # iteration's remainder 2.9e-12 moves by 0.6 %): written as the bound; the other values
+    # (radii, norms, the preview differences of the short previews) hold 6 digits
+    df.attrs["precision"] = {"value": "<1e-10:6"}
+    return df
 
 
 def taylor_table(t) -> pd.DataFrame:
@@ -128,7 +135,17 @@ def tracking_table(params, ctrl, amp, omega, ts) -> pd.DataFrame:
         r = simulate(params, ctrl, amplitude=amp, omega=omega, n_steps=n, mode=mode, order=q)
         case = mode if q is None else f"order {q}"
         frames.append(pd.DataFrame({"case": case, **{k: r[k] for k in "tzyeu"}}))
-    return pd.concat(frames, ignore_index=True)
+    df = pd.concat(frames, ignore_index=True)
+    # y and e = y - z carry an absolute round-off of about 1e-15 (the BLAS kernel's
+    # matrix-vector products; 1.1e-15 between the default kernel and Prescott), which is
+    # most of the value where y or e is tiny (the start, the zero crossings of e): written
+    # with 5 digits, and as the bound below 1e-10
+    df.attrs["precision"] = {"y": TRACK_PRECISION, "e": TRACK_PRECISION}
+    return df
+
+
+#: Written precision of the time series' y and e (see :func:`tracking_table`).
+TRACK_PRECISION = "<1e-10:5"
 
 
 def omega_sweep_table(controllers, r: float, sw) -> pd.DataFrame:
@@ -153,4 +170,32 @@ def omega_sweep_table(controllers, r: float, sw) -> pd.DataFrame:
                         "phase_e": a["phase_e"],
                     }
                 )
-    return pd.DataFrame(rows)
+    df = pd.DataFrame(rows)
+    # e is the small difference y - z (|z| = 1): its round-off is absolute, about 1e-14
+    # (default OpenBLAS kernel vs OPENBLAS_CORETYPE=Prescott: 9e-15 at e = 1.2e-8), so e_max
+    # holds 4 digits above 1e-10 and is round-off below; its phase is then undefined
+    small = df["e_max"] < E_ROUNDOFF
+    df["phase_e"] = [
+        np.nan if sm else wrap_phase(p) for sm, p in zip(small, df["phase_e"], strict=True)
+    ]
+    df.attrs["precision"] = {"e_max": f"<{E_ROUNDOFF:g}:4", "phase_e": PHASE_DIGITS}
+    return df
+
+
+#: Absolute round-off of the steady-state error amplitude e (see :func:`omega_sweep_table`).
+E_ROUNDOFF = 1e-10
+#: Significant digits the phase of e holds (its error is about 1e-14 / e_max rad, < 1e-4).
+PHASE_DIGITS = 4
+
+
+def wrap_phase(phase: float, digits: int = PHASE_DIGITS) -> float:
+    """``phase`` (rad, in [-pi, pi]) with the branch cut handled at the written precision.
+
+    A phase that rounds to -pi at ``digits - 1`` decimals is moved up by 2 pi, so that
+    -pi + 1e-9 and pi - 1e-9 (the same angle, on either side of the cut by round-off) are
+    written alike: the result lies in (-pi, pi] once rounded.
+    """
+    d = digits - 1
+    if round(float(phase), d) <= -round(np.pi, d):
+        return float(phase) + 2.0 * np.pi
+    return float(phase)
