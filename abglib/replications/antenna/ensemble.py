@@ -22,6 +22,7 @@ from numba import njit
 from ..._checks import AbglibValueError, check_positive
 from ...analysis._statespace import state_space
 from ...gains import Gains
+from .._numerics import snap as snap_bits
 from .closedloop import Controller, _object_model, discrete_plant
 from .kalman import extended_model, kalman_gains
 from .model import AntennaParams
@@ -79,8 +80,7 @@ def snap(x) -> np.ndarray:
     machine unless a value lies within those last bits of a grid boundary, and changes the
     design by far less than any physical tolerance.
     """
-    m, e = np.frexp(np.asarray(x, dtype=float))
-    return np.ascontiguousarray(np.ldexp(np.round(m * 2.0**SNAP_BITS) / 2.0**SNAP_BITS, e))
+    return np.ascontiguousarray(snap_bits(x, SNAP_BITS))
 
 
 @njit(cache=True)
