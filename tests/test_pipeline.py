@@ -183,3 +183,18 @@ def test_datasets_and_alwagih_outputs(two_runs):
     assert len(comp) == published
     assert (comp.loc[comp["depends_on"] != "", "robust"] != "").all()
     assert (a / REPORTS / "alwagih" / "index.html").is_file()
+
+
+def test_every_comparison_says_what_it_hinges_on(two_runs):
+    """CONTRACTS.md §3 (v0.3.0): a row that hinges on an input names it in depends_on, and
+    every row with depends_on says whether its verdict is robust."""
+    for doc in ("steelman1978", "alwagih", "huang", "faa_bendix", "antenna"):
+        comp = pd.read_csv(
+            two_runs[0] / "results" / doc / "comparison.csv", dtype=str, keep_default_na=False
+        )
+        assert list(comp.columns) == COMPARISON_COLUMNS, doc
+        assert not comp.loc[comp["note"].str.contains("hinges on"), "depends_on"].eq("").any(), doc
+        robust = comp.loc[comp["depends_on"] != "", "robust"]
+        assert set(robust) <= {"true", "false"}, doc
+        flipped = comp[comp["robust"] == "false"]
+        assert (flipped["verdict"] == "not_reproducible").all(), doc
