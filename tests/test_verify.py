@@ -18,7 +18,13 @@ COMP = "doc,item,reproduced,verdict,note\nd,a,0.1235,match,\nd,b,12.5,mismatch,o
         ("0.1235", "0.1235", True),
         ("0.1235", "0.1234", True),  # one unit in the last written digit: a rounding flip
         ("0.1235", "0.1233", False),
-        ("1.20", "1.2", True),  # same value; the coarser one's last digit sets the unit
+        ("1.20", "1.2", True),  # the same value
+        ("1.2", "1.199999999", True),  # %g drops trailing zeros: a flip at the 10th digit
+        ("2", "2.9", False),  # "2" is 2.000000000 at 10 digits, not 2 +- 1
+        ("0", "0.5", False),
+        ("0.5", "0.59", False),
+        ("1e-05", "1.9e-05", False),
+        ("12", "13", False),  # integers (counts) must be equal
         ("<1e-12", "<1e-12", True),
         ("<1e-12", "3e-13", True),  # a bound holds a smaller number
         ("<1e-12", "2e-12", False),
@@ -32,8 +38,9 @@ def test_cell_agreement_is_within_the_written_precision(release, build, agrees):
 
 
 def test_relative_deviation_of_numbers():
-    ok, dev = cell_agrees("2.000", "2.001")
-    assert ok and dev == pytest.approx(5e-4)
+    ok, dev = cell_agrees("2.000000001", "2.000000002")
+    assert ok and dev == pytest.approx(5e-10)
+    assert math.isnan(cell_agrees("0", "1e-9")[1])  # no relative deviation from 0
     assert math.isnan(cell_agrees("a", "b")[1])
 
 
@@ -107,3 +114,17 @@ def test_partial_compares_only_the_builds_tables(tmp_path, capsys):
     assert "doc: 1 tables, 2 rows compared" in capsys.readouterr().out
     (build / "doc" / "comparison.csv").write_text(COMP.replace("mismatch", "match"))
     assert main(["verify", str(build), "--release", str(rel), "--partial"]) == 1
+
+
+def test_partial_verify_of_a_folder_without_tables_fails(tmp_path, capsys):
+    rel = _folder(tmp_path / "rel")
+    (tmp_path / "empty").mkdir()
+    assert main(["verify", str(tmp_path / "empty"), "--release", str(rel), "--partial"]) == 1
+    assert "no table of" in capsys.readouterr().err
+
+
+def test_the_report_counts_what_it_leaves_out(tmp_path):
+    from abglib.reporting.verify import Difference, DocReport, format_report
+
+    rep = DocReport("doc", differences=[Difference("t", i, "c", "1", "2") for i in range(7)])
+    assert "... and 2 more" in format_report([rep], limit=5)

@@ -385,6 +385,11 @@ def plausible_ranges(config: Mapping, doc: str) -> dict[str, PlausibleRange]:
             grid = [int(round(v)) if as_int else float(v) for v in grid]
             values = sorted(set(grid) | {nominal})
             numeric = True
+        if len(values) < 2:
+            raise AbglibValueError(
+                f"{doc}.plausible.{name}: a range needs a value besides the nominal "
+                f"{nominal!r}, got {list(values)}"
+            )
         out[name] = PlausibleRange(name, nominal, tuple(values), basis, lo, hi, numeric)
     return out
 

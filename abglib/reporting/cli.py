@@ -71,6 +71,9 @@ def verify(build: Path, release: Path, limit: int = 5, partial: bool = False) ->
     reports = compare_folders(release, build, partial)
     print(f"abglib verify: build {build} against release {release}")
     print(format_report(reports, limit))
+    if sum(r.tables for r in reports) == 0:
+        print(f"abglib verify: no table of {release} found in {build}", file=sys.stderr)
+        return 1
     bad = [r.doc for r in reports if not r.ok]
     if bad:
         print(f"DIFFERENT: {', '.join(bad)}", file=sys.stderr)

@@ -374,7 +374,14 @@ def _as_bool(x) -> bool:
         if s in ("false", "0", "0.0"):
             return False
         raise AbglibValueError(f"a qualitative check must be True or False, got {x!r}")
-    return bool(x)
+    if isinstance(x, (bool, np.bool_)):
+        return bool(x)
+    if isinstance(x, (int, float, np.integer, np.floating)) and float(x) in (0.0, 1.0):
+        return bool(x)
+    raise AbglibValueError(
+        f"a qualitative check must be True or False, got {x!r} (a claim with an empty "
+        "published value returns whether its check holds, not a number)"
+    )
 
 
 def build_comparison(
@@ -476,6 +483,10 @@ def judge(doc: str, row, value, note, alternatives=(), overrides=None) -> dict:
                     f"{doc}: tolerance override for {row.key!r} must give a reason"
                 )
             tol = float(ov["tolerance"])
+            if not tol > 0:
+                raise AbglibValueError(
+                    f"{doc}: tolerance override for {row.key!r} must be > 0, got {tol!r}"
+                )
             tol_note = f"tolerance {format_number(tol)} ({reason})"
     v, alt = verdict(row.published, value, tol, alternatives)
     abs_err = rel_err = None

@@ -64,16 +64,24 @@ def _decimal(text: str) -> Decimal | None:
     return d if d.is_finite() else None
 
 
-def _last_digit_unit(d: Decimal) -> Decimal:
-    return Decimal(1).scaleb(d.as_tuple().exponent)
+def _significant_digits(d: Decimal) -> int:
+    return len(d.normalize().as_tuple().digits) if d != 0 else 1
+
+
+def _is_integer_text(text: str) -> bool:
+    return text.strip().lstrip("-").isdigit()
 
 
 def cell_agrees(release: str, build: str) -> tuple[bool, float]:
-    """Whether two written cells agree, and their relative deviation (NaN for text).
+    """Whether two written cells agree, and their relative deviation (NaN for text, or
+    when the release value is 0).
 
-    Numbers agree within one unit in the last written digit of either (a value that sits
-    on a rounding boundary may round either way); ``<x`` bounds agree with each other
-    and with any number below ``x``.
+    Numbers are written with ``%g`` at their column's precision, which drops trailing
+    zeros, so the precision of a cell is that of the longer of the two: they agree within
+    one unit in the last significant digit of the longer one (a value on a rounding
+    boundary may round either way): ``1.2`` and ``1.199999999`` agree, ``2`` and ``2.9``
+    do not. Integers (counts) must be equal. ``<x`` bounds agree with each other and with
+    any number below ``x``.
     """
     if release == build:
         return True, 0.0
@@ -86,8 +94,12 @@ def cell_agrees(release: str, build: str) -> tuple[bool, float]:
     a, b = _decimal(release), _decimal(build)
     if a is None or b is None:
         return False, math.nan
-    unit = max(_last_digit_unit(a), _last_digit_unit(b))
-    dev = float(abs(a - b) / abs(a)) if a != 0 else float(abs(b))
+    dev = float(abs(a - b) / abs(a)) if a != 0 else math.nan
+    if _is_integer_text(release) and _is_integer_text(build):
+        return False, dev
+    digits = max(_significant_digits(a), _significant_digits(b))
+    top = max(abs(a), abs(b))
+    unit = Decimal(1).scaleb(top.adjusted() - (digits - 1))
     return abs(a - b) <= unit, dev
 
 
@@ -165,7 +177,7 @@ def format_report(reports: list[DocReport], limit: int = 5) -> str:
             lines.append(f"  - {p}")
         for d in r.differences[:limit]:
             lines.append(f"  - {d}")
-        hidden = len(r.problems) + len(r.differences) - 2 * limit
-        if len(r.problems) > limit or len(r.differences) > limit:
-            lines.append(f"  ... and {max(hidden, 1)} more")
+        hidden = max(0, len(r.problems) - limit) + max(0, len(r.differences) - limit)
+        if hidden:
+            lines.append(f"  ... and {hidden} more")
     return "\n".join(lines)

@@ -215,3 +215,24 @@ def test_config_paths():
     assert config_get(new, "a.b.1.c") == 5 and config_get(cfg, "a.b.1.c") == 2
     with pytest.raises(AbglibValueError, match="no entry 'a.z'"):
         config_with(cfg, "a.z", 1)
+
+
+def test_a_qualitative_claim_must_return_a_bool():
+    cs = ClaimSet("toy")
+    cs.claim("x.claim")(lambda s: Result(-0.5, "a margin, not a check"))
+    pub = PUB[PUB["key"] == "x.claim"]
+    with pytest.raises(AbglibValueError, match="must be True or False, got -0.5"):
+        evaluate("toy", cs, pub, ToyStudy(config(), pub), lambda c: ToyStudy(c, pub))
+
+
+def test_a_range_without_another_value_is_refused():
+    cfg = {"toy": {"scale": 1.0, "plausible": {"toy.scale": {"values": [1.0], "basis": "b"}}}}
+    with pytest.raises(AbglibValueError, match="needs a value besides the nominal"):
+        plausible_ranges(cfg, "toy")
+
+
+def test_a_zero_tolerance_override_is_refused():
+    study = ToyStudy(config(), PUB)
+    overrides = {"x.value": {"tolerance": 0.0, "reason": "none"}}
+    with pytest.raises(AbglibValueError, match="must be > 0, got 0.0"):
+        evaluate("toy", CLAIMS, PUB, study, lambda c: ToyStudy(c, PUB), overrides)
