@@ -146,9 +146,6 @@ def published_tables_of(doc):
     return [str(f) for f in files]
 
 
-def published_tables(wildcards):
-    return published_tables_of(wildcards.doc)
-
 
 def report_figures(doc):
     return [f"results/{doc}/figures/{f}.png" for f in REPORT_CONTENT[doc]["figures"]]
