@@ -146,7 +146,6 @@ def published_tables_of(doc):
     return [str(f) for f in files]
 
 
-
 def report_figures(doc):
     return [f"results/{doc}/figures/{f}.png" for f in REPORT_CONTENT[doc]["figures"]]
 
