@@ -19,7 +19,8 @@ league table, which needs the matrix's 4 cells, which need their 2 datasets: 8 j
 three levels of dependencies.
 
 Marker ``slurm``, deselected by default; ``.ci/run`` starts a one-node cluster
-(tools/slurm-cluster.sh) and runs ``pytest -m slurm``. Without a cluster it is skipped.
+(tools/slurm-cluster.sh) and runs ``pytest -m slurm``. Without a cluster it is skipped
+(it fails instead when ABGLIB_REQUIRE_SLURM=1, as .ci/run sets).
 Account and partition come from SBATCH_ACCOUNT and SBATCH_PARTITION, as in the README;
 unset, they are the loopback cluster's ``ci`` and ``debug``.
 """
@@ -47,24 +48,32 @@ def _exe(name: str) -> str:
     return str(BIN / name) if (BIN / name).exists() else name
 
 
+def _no_cluster(reason: str) -> None:
+    """Skip; with ABGLIB_REQUIRE_SLURM=1 (.ci/run, which has started a cluster) fail."""
+    if os.environ.get("ABGLIB_REQUIRE_SLURM") == "1":
+        pytest.fail(f"ABGLIB_REQUIRE_SLURM=1 but {reason}")
+    pytest.skip(reason)
+
+
 def _cluster_or_skip() -> None:
-    """Skip unless sinfo shows an up node and sacct answers (the plugin polls sacct)."""
-    pytest.importorskip(
-        "snakemake_executor_plugin_slurm", reason="pip install -e '.[slurm]' for this test"
-    )
+    """Skip unless sinfo shows a partition up and sacct answers (the plugin polls sacct)."""
+    try:
+        import snakemake_executor_plugin_slurm  # noqa: F401
+    except ImportError:
+        _no_cluster("snakemake-executor-plugin-slurm is not installed: pip install -e '.[slurm]'")
     answers = {}
     for cmd in (["sinfo", "-h", "-o", "%a"], ["sacct", "-n", "-X", "-S", "now"]):
         if shutil.which(cmd[0]) is None:
-            pytest.skip(f"no SLURM client ({cmd[0]} not found): sudo tools/slurm-cluster.sh start")
+            _no_cluster(f"no SLURM client ({cmd[0]} not found): sudo tools/slurm-cluster.sh start")
         out = subprocess.run(cmd, capture_output=True, text=True, timeout=60)
         if out.returncode != 0:
-            pytest.skip(
+            _no_cluster(
                 f"no SLURM cluster answers ({' '.join(cmd)}: {out.stderr.strip()[:200]}); "
                 "start one with `sudo tools/slurm-cluster.sh start`"
             )
         answers[cmd[0]] = out.stdout.split()
     if "up" not in answers["sinfo"]:
-        pytest.skip("the SLURM cluster has no partition up")
+        _no_cluster("the SLURM cluster has no partition up")
 
 
 def _snakemake(workdir: Path, *args: str, env=None) -> subprocess.CompletedProcess:

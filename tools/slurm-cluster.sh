@@ -273,6 +273,9 @@ do_start() {
     write_configs
     if [[ -L $DEFAULT_CONF && $(readlink "$DEFAULT_CONF") == "$SLURM_CONF" ]]; then
         :
+    elif [[ -L $DEFAULT_CONF && ! -e $DEFAULT_CONF && $(readlink "$DEFAULT_CONF") == */etc/slurm.conf ]]; then
+        say "replacing the dangling $DEFAULT_CONF of a cluster whose directory is gone"
+        ln -sfn "$SLURM_CONF" "$DEFAULT_CONF"
     elif [[ -e $DEFAULT_CONF || -L $DEFAULT_CONF ]]; then
         fail "$DEFAULT_CONF exists and is not this cluster's: another SLURM is configured here"
     else
