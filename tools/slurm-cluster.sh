@@ -126,7 +126,7 @@ write_configs() {
     # the node as slurmd sees it; a node declared bigger than it is would be drained
     hw=$(slurmd -C | head -1 | sed 's/^NodeName=[^ ]* //')
     [[ $hw == *CPUs=*RealMemory=* ]] || fail "unexpected output of slurmd -C: $hw"
-    cat >"$ETC/slurm.conf" <<EOF
+    cat >"$ETC/slurm.conf.new" <<EOF
 # written by tools/slurm-cluster.sh (rewritten on every start)
 ClusterName=$CLUSTER
 SlurmctldHost=$NODE(127.0.0.1)
@@ -165,6 +165,13 @@ SlurmdLogFile=$LOGS/slurmd.log
 NodeName=$NODE NodeAddr=127.0.0.1 $hw State=UNKNOWN
 PartitionName=$PARTITION Nodes=$NODE Default=YES MaxTime=INFINITE State=UP
 EOF
+    if cmp -s "$ETC/slurm.conf.new" "$ETC/slurm.conf"; then
+        rm "$ETC/slurm.conf.new"
+    else
+        mv "$ETC/slurm.conf.new" "$ETC/slurm.conf"
+        # a controller still running from an earlier start reads the new one
+        if running slurmctld >/dev/null; then scontrol reconfigure >/dev/null || true; fi
+    fi
     # slurmdbd reads slurmdbd.conf beside $SLURM_CONF; it must be 0600
     (
         umask 077
@@ -282,7 +289,6 @@ do_start() {
         mkdir -p "$(dirname "$DEFAULT_CONF")"
         ln -s "$SLURM_CONF" "$DEFAULT_CONF"
     fi
-    if running slurmctld >/dev/null; then scontrol reconfigure >/dev/null || true; fi
     start_munged
     start_mariadbd
     start_slurmdbd
