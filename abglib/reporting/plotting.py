@@ -44,6 +44,7 @@ __all__ = [
     "REFERENCE",
     "STYLE",
     "WIDTH",
+    "cut_off",
     "describe",
     "description",
     "family_colour",
@@ -54,6 +55,7 @@ __all__ = [
     "save_figure",
     "shades",
     "styled",
+    "suptitle",
     "text_overlaps",
 ]
 
@@ -77,9 +79,9 @@ FAMILY_COLOURS = {
     "Kalata α-β-γ": "#e377c2",
     "Kalman": "#4d4d4d",  # steady-state Kalman filters (DARE), any model order
     "Huang type I α-β": "#bcbd22",
-    "Huang type I α-β-γ": "#7a7a00",
+    "Huang type I α-β-γ": "#556b2f",
     "Huang type II α-β": "#17becf",
-    "Huang type II α-β-γ": "#0b6e78",
+    "Huang type II α-β-γ": "#b03060",
     "Bendix α-β": "#00008b",
     "growing memory α-β": "#b8860b",  # = Al-Wagih's M2 (seed 001, eqs 24a-b)
     "Al-Wagih M3": "#1b9e77",
@@ -197,6 +199,15 @@ def shades(colour, n: int) -> list:
 LINESTYLES = ["-", "--", "-.", ":", (0, (5, 1, 1, 1, 1, 1))]
 
 
+def suptitle(fig, text: str, **kwargs):
+    """The figure's title, wrapped to the figure's width (constrained layout does not wrap)."""
+    import textwrap
+
+    width = fig.get_figwidth() if hasattr(fig, "get_figwidth") else WIDTH
+    chars = int(width * 72 / (0.56 * plt.rcParams["figure.titlesize"]))
+    return fig.suptitle(textwrap.fill(" ".join(text.split()), chars), **kwargs)
+
+
 # ------------------------------------------------------------------ legends, overlaps
 
 
@@ -211,8 +222,7 @@ def legend_outside(where, handles=None, labels=None, side: str = "right", ncol: 
     if side not in ("right", "top", "bottom"):
         raise ValueError(f"side must be one of ['right', 'top', 'bottom'], got {side!r}")
     if handles is None:
-        axes = where.axes if hasattr(where, "get_axes") and not hasattr(where, "transData") \
-            else [where]
+        axes = [where] if hasattr(where, "transData") else where.axes
         seen = {}
         for ax in axes:
             for h, lab in zip(*ax.get_legend_handles_labels(), strict=True):
@@ -324,6 +334,31 @@ def text_overlaps(fig) -> list:
             for j in range(i + 1, len(texts)):
                 if boxes[i].overlaps(boxes[j]):
                     found.append((texts[i].get_text(), texts[j].get_text()))
+    return found
+
+
+def cut_off(fig) -> list:
+    """Legends, titles and texts of ``fig`` that reach beyond the figure's edge (constrained
+    layout cannot shrink a legend that is wider than the figure), by their text."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    box = fig.bbox.padded(1.0)
+    found = []
+    texts = []
+    for leg in _legends(fig):
+        texts += leg.get_texts()
+    figs = [fig, *getattr(fig, "subfigs", [])]
+    for f in figs:
+        texts += list(f.texts) + [getattr(f, "_suptitle", None)]
+    for ax in fig.axes:
+        texts += [ax.title, ax._left_title, ax._right_title, ax.xaxis.label, ax.yaxis.label]
+        texts += [t for t in ax.texts if not t.get_clip_on()]
+    for t in texts:
+        if t is None or not t.get_visible() or not t.get_text():
+            continue
+        b = t.get_window_extent(renderer)
+        if b.x0 < box.x0 or b.x1 > box.x1 or b.y0 < box.y0 or b.y1 > box.y1:
+            found.append(t.get_text()[:60])
     return found
 
 
@@ -477,7 +512,7 @@ def frequency_response_figure(data: pd.DataFrame, axes: str, title: str = ""):
     ax_ph.set_ylabel("phase (degrees)")
     ax_ph.set_xlabel("ωT (radians per sample)")
     if title:
-        fig.suptitle(title)
+        suptitle(fig, title)
     legend_outside(fig, *_handles(ax_mag), side="top", ncol=2)
     scale = "log" if axes == "bode" else "linear"
     describe(
