@@ -204,7 +204,7 @@ def suptitle(fig, text: str, **kwargs):
     import textwrap
 
     width = fig.get_figwidth() if hasattr(fig, "get_figwidth") else WIDTH
-    chars = int(width * 72 / (0.56 * plt.rcParams["figure.titlesize"]))
+    chars = int(width * 72 / (0.53 * plt.rcParams["figure.titlesize"]))
     return fig.suptitle(textwrap.fill(" ".join(text.split()), chars), **kwargs)
 
 
