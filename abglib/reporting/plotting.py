@@ -57,6 +57,7 @@ __all__ = [
     "styled",
     "suptitle",
     "text_overlaps",
+    "tint",
 ]
 
 #: width of a full-width figure (inches) and the resolution it is saved at: 7 in x 100 dpi
@@ -196,6 +197,14 @@ def shades(colour, n: int) -> list:
     return out
 
 
+def tint(colour, f: float) -> tuple:
+    """``colour`` mixed with white by ``f`` (0 = the colour, 1 = white)."""
+    if not 0.0 <= f <= 1.0:
+        raise ValueError(f"f must satisfy 0 <= f <= 1, got {f!r}")
+    rgb = np.asarray(to_rgb(colour))
+    return tuple(rgb + (1.0 - rgb) * f)
+
+
 LINESTYLES = ["-", "--", "-.", ":", (0, (5, 1, 1, 1, 1, 1))]
 
 
@@ -203,9 +212,14 @@ def suptitle(fig, text: str, **kwargs):
     """The figure's title, wrapped to the figure's width (constrained layout does not wrap)."""
     import textwrap
 
-    width = fig.get_figwidth() if hasattr(fig, "get_figwidth") else WIDTH
-    chars = int(width * 72 / (0.53 * plt.rcParams["figure.titlesize"]))
-    return fig.suptitle(textwrap.fill(" ".join(text.split()), chars), **kwargs)
+    text = " ".join(text.split())
+    chars = int(fig.bbox.width / (0.53 * plt.rcParams["figure.titlesize"] * fig.dpi / 72))
+    title = fig.suptitle(textwrap.fill(text, chars), **kwargs)
+    renderer = fig.canvas.get_renderer()
+    while chars > 20 and title.get_window_extent(renderer).width > 0.98 * fig.bbox.width:
+        chars = int(chars * 0.92)  # wide letters (capitals): wrap shorter
+        title.set_text(textwrap.fill(text, chars))
+    return title
 
 
 # ------------------------------------------------------------------ legends, overlaps
