@@ -55,8 +55,7 @@ def benchmark_heatmap(league: pd.DataFrame, metric: str = "rmse_x_smooth", title
     h = max(3.0, 0.27 * len(piv) + 2.2)
     fig, ax = plt.subplots(figsize=(WIDTH, h))
     data = np.ma.masked_invalid(ratio.to_numpy())
-    cmap = plt.get_cmap("viridis_r").copy()
-    cmap.set_bad("0.85")
+    cmap = plt.get_cmap("viridis_r").with_extremes(bad="0.85")
     vmax = max(float(np.nanmax(ratio.to_numpy())) if data.count() else 2.0, 1.01)
     im = ax.imshow(data, aspect="auto", cmap=cmap, norm=LogNorm(1.0, vmax))
     for i in range(ratio.shape[0]):

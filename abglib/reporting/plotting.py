@@ -93,8 +93,8 @@ FAMILY_COLOURS = {
 # (pattern on the lower-cased name, family): first match wins; names are benchmark
 # family labels, variant and rule names, the documents' curve labels
 _ALIASES = [
-    (r"huang.*(type ?ii|type2|t2|huang2)\b.*(α-β-γ|abg|order=3)", "Huang type II α-β-γ"),
-    (r"huang.*(type ?ii|type2|t2|huang2)", "Huang type II α-β"),
+    (r"(huang.*(type ?ii|type2|t2)|huang2).*(α-β-γ|abg|order=3)", "Huang type II α-β-γ"),
+    (r"huang.*(type ?ii|type2|t2)|huang2", "Huang type II α-β"),
     (r"huang.*(α-β-γ|abg|order=3)", "Huang type I α-β-γ"),
     (r"huang", "Huang type I α-β"),
     (r"\bqd\b|^qd_", "QD α-β-γ"),
@@ -102,7 +102,7 @@ _ALIASES = [
     (r"growing|\bm2\b|_m2\b", "growing memory α-β"),
     (r"\bm3\b|_m3\b", "Al-Wagih M3"),
     (r"\bm4\b|_m4\b", "Al-Wagih M4"),
-    (r"\bm5", "Al-Wagih M5"),
+    (r"(\b|_)m5", "Al-Wagih M5"),
     (r"simpson", "Simpson α-β-γ"),
     (r"kalata.*(α-β-γ|abg)", "Kalata α-β-γ"),
     (r"kalata", "Kalata α-β"),
@@ -282,9 +282,11 @@ def _data_extents(ax, renderer) -> Iterable:
         if len(offs) and coll.get_offset_transform() is not None:
             pts = coll.get_offset_transform().transform(offs)
             yield coll.get_label(), "points", pts
+    owner = {id(p): c.get_label() for c in ax.containers for p in c if p is not None}
     for patch in ax.patches:
         if patch.get_visible():
-            yield patch.get_label(), "box", patch.get_window_extent(renderer)
+            label = owner.get(id(patch), patch.get_label())
+            yield label, "box", patch.get_window_extent(renderer)
     for img in ax.images:
         yield "image", "box", img.get_window_extent(renderer)
     for text in ax.texts:

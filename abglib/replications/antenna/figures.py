@@ -237,8 +237,8 @@ def _antenna_amplitude(t):
         ax.set_xlabel("t (in units of 1/ω₀)")
     describe(
         fig,
-        f"Replicates Figs I.17-I.19: tracking error (left) and control input (right) "
-        f"against time, one row per amplitude; " + "; ".join(peaks) + ".",
+        "Replicates Figs I.17-I.19: tracking error (left) and control input (right) "
+        "against time, one row per amplitude; " + "; ".join(peaks) + ".",
     )
     return fig
 
