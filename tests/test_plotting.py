@@ -58,6 +58,12 @@ def test_a_figure_without_alt_text_is_refused_and_nothing_is_written(tmp_path):
         describe(_line_figure(), "   ")
 
 
+def test_alt_must_be_text_and_dpi_a_keyword(tmp_path):
+    with pytest.raises(TypeError, match="alt must be a str"):
+        save_figure(_line_figure(), tmp_path / "f.png", 100)
+    assert not (tmp_path / "f.png").exists()
+
+
 def test_bad_dpi_is_refused_naming_the_range(tmp_path):
     with pytest.raises(ValueError, match=r"dpi must be a number in \[20, 600\], got 5000"):
         save_figure(_line_figure(), tmp_path / "f.png", alt="x", dpi=5000)

@@ -72,17 +72,25 @@ def benchmark_heatmap(league: pd.DataFrame, metric: str = "rmse_x_smooth", title
     ax.set_ylabel("variant (best median ratio first)")
     ax.grid(False)
     ax.spines[:].set_visible(False)
-    fig.colorbar(im, ax=ax, label=f"{name} / best in the scenario (log scale)", shrink=0.8)
+    from matplotlib.ticker import FuncFormatter
+
+    bar = fig.colorbar(im, ax=ax, label=f"{name} / best in the scenario (log scale)", shrink=0.8)
+    plain = FuncFormatter(lambda v, _: f"{v:g}")
+    bar.ax.yaxis.set_major_formatter(plain)
+    bar.ax.yaxis.set_minor_formatter(plain if vmax < 20 else FuncFormatter(lambda v, _: ""))
     suptitle(fig, title or f"{name} across the benchmark matrix, relative to the best")
     best = piv.idxmin(axis=0)
     worst = ratio.max(axis=0)
+    ranked = ratio.median(axis=1).dropna().index
+    na = [v for v in piv.index if piv.loc[v].isna().all()]
     describe(
         fig,
         f"Heatmap of the {name} of {len(piv)} variants (rows) in {piv.shape[1]} scenarios "
         f"(columns), each cell divided by the best of its scenario (1 = best, log colour "
         f"scale up to {vmax:.3g}). Best per scenario: "
         + "; ".join(f"{s}: {best[s]} (worst {worst[s]:.3g} times it)" for s in piv.columns)
-        + f". Best median ratio: {order[0]}; worst: {order[-1]}."
+        + (f". Best median ratio: {ranked[0]}; worst: {ranked[-1]}." if len(ranked) else ".")
+        + (f" Not defined for {', '.join(na)}." if na else "")
         + (f" {int(div.to_numpy().sum())} cells diverged." if div.to_numpy().any() else ""),
     )
     return fig

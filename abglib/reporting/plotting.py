@@ -383,7 +383,7 @@ def cut_off(fig) -> list:
 
 def describe(fig, alt: str):
     """Attach the alt text ``alt`` (what the figure shows) to ``fig``; returns ``fig``."""
-    alt = " ".join(str(alt).split())
+    alt = " ".join(str(alt).split()).lstrip(". ")  # '. Two panels' when there is no title
     if not alt:
         raise ValueError("an alt text must say what the figure shows, got an empty one")
     fig._abglib_alt = alt
@@ -395,7 +395,7 @@ def description(fig) -> str:
     return getattr(fig, "_abglib_alt", "")
 
 
-def save_figure(fig, path, alt: str | None = None, dpi: int = DPI) -> None:
+def save_figure(fig, path, alt: str | None = None, *, dpi: int = DPI) -> None:
     """Save ``fig`` as a deterministic PNG at ``path`` (temp file, then ``os.replace``).
 
     The alt text (``alt``, else the one attached by :func:`describe`) is stored in the
@@ -409,8 +409,10 @@ def save_figure(fig, path, alt: str | None = None, dpi: int = DPI) -> None:
 
     from .pipeline import atomic_output
 
-    alt = " ".join(str(alt or description(fig)).split())
     try:
+        if alt is not None and not isinstance(alt, str):
+            raise TypeError(f"alt must be a str (what the figure shows), got {alt!r}")
+        alt = " ".join((alt or description(fig)).split())
         if not alt:
             raise ValueError(
                 f"save_figure({str(path)!r}): no alt text; pass alt= or describe(fig, ...)"
