@@ -171,9 +171,10 @@ def test_every_figure_has_alt_text_and_no_legend_or_label_over_data(doc, tmp_pat
         alt = description(fig)
         if len(alt) < 80 or "nan" in alt.lower().split():
             problems.append(f"{name}: alt text too thin: {alt!r}")
-        for what, found in (("legend over data", legend_overlaps(fig)),
-                            ("labels over each other", text_overlaps(fig)),
-                            ("cut off at the edge", cut_off(fig))):
+        fig.canvas.draw()
+        for what, found in (("legend over data", legend_overlaps(fig, redraw=False)),
+                            ("labels over each other", text_overlaps(fig, redraw=False)),
+                            ("cut off at the edge", cut_off(fig, redraw=False))):
             if found:
                 problems.append(f"{name}: {what}: {found[:3]}")
         png = tmp_path / (name.replace("/", "_") + ".png")

@@ -317,11 +317,12 @@ def _hits(kind, obj, box: Bbox) -> bool:
     return box.overlaps(obj) and obj.width > 0 and obj.height > 0
 
 
-def legend_overlaps(fig) -> list:
+def legend_overlaps(fig, redraw: bool = True) -> list:
     """Every (legend entry, data artist) pair of ``fig`` whose ink meets: a legend drawn
     over a curve, a marker, a bar, an image or a text of any axes. Only the part of the
     legend inside an axes counts (artists are clipped to their axes). Empty = clean."""
-    fig.canvas.draw()
+    if redraw:  # False: the caller has drawn the figure since its last change
+        fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
     found = []
     for leg in _legends(fig):
@@ -337,10 +338,11 @@ def legend_overlaps(fig) -> list:
     return found
 
 
-def text_overlaps(fig) -> list:
+def text_overlaps(fig, redraw: bool = True) -> list:
     """Every pair of texts drawn into the axes of ``fig`` (annotations, labels of points)
     whose boxes overlap, as ``(text, text)``; and texts that spill over an axes' edge."""
-    fig.canvas.draw()
+    if redraw:  # False: the caller has drawn the figure since its last change
+        fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
     found = []
     for ax in fig.axes:
@@ -353,10 +355,11 @@ def text_overlaps(fig) -> list:
     return found
 
 
-def cut_off(fig) -> list:
+def cut_off(fig, redraw: bool = True) -> list:
     """Legends, titles and texts of ``fig`` that reach beyond the figure's edge (constrained
     layout cannot shrink a legend that is wider than the figure), by their text."""
-    fig.canvas.draw()
+    if redraw:  # False: the caller has drawn the figure since its last change
+        fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
     box = fig.bbox.padded(1.0)
     found = []
