@@ -10,11 +10,11 @@ def main(input, output, params) -> None:
     from abglib.reporting.plotting import save_figure
 
     league = pd.read_csv(input.league)
-    save_figure(benchmark_heatmap(league, params.rank_by), output.heatmap, params.dpi)
+    save_figure(benchmark_heatmap(league, params.rank_by), output.heatmap, dpi=params.dpi)
     points = pd.read_csv(input.tradeoff)
     curves = pd.read_csv(input.curves)
     fig = tradeoff_figure(curves, points, params.tradeoff_scenarios)
-    save_figure(fig, output.tradeoff, params.dpi)
+    save_figure(fig, output.tradeoff, dpi=params.dpi)
 
 
 if "snakemake" in globals():

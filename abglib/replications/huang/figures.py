@@ -5,7 +5,16 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...reporting.plotting import _STYLE, plt
+from ...reporting.plotting import (
+    REFERENCE,
+    WIDTH,
+    describe,
+    family_colour,
+    legend_outside,
+    plt,
+    styled,
+    suptitle,
+)
 
 __all__ = [
     "huang_bandwidth_figure",
@@ -15,10 +24,22 @@ __all__ = [
 ]
 
 
-
 _HUANG_TRACKERS = {2: "α-β", 3: "α-β-γ"}
+_ROMAN = {"type1": "I", "type2": "II", "1": "I", "2": "II"}
 
 
+def _family(rule: str, order: int) -> str:
+    """The benchmark family of a Huang tracker: ``'Huang type II α-β-γ'``."""
+    return f"Huang type {_ROMAN[rule]} {_HUANG_TRACKERS[order]}"
+
+
+def _tracker_family(name: str) -> str:
+    """Family of a tracker of ``track.csv`` from its name, e.g. ``abg_t2_10`` -> type II α-β-γ."""
+    kind, rule = name.split("_")[:2]
+    return _family(rule[1:], 3 if kind == "abg" else 2)
+
+
+@styled
 def huang_bandwidth_figure(
     curves: pd.DataFrame, rule: str, marks: pd.DataFrame, dt: float, title: str = ""
 ):
@@ -40,56 +61,83 @@ def huang_bandwidth_figure(
     Returns
     -------
     matplotlib.figure.Figure
-        Log ``B_n T``: solid = exact (Lyapunov), dots = the closed forms (eq 14,
-        reconstructed eqs 8-13), thin dashed = eq 13 read literally.
+        Log ``B_n T``: solid = exact (Lyapunov), circles = the closed forms (eq 14,
+        reconstructed eqs 8-13), thin dashed = eq 13 read literally; triangles = printed
+        gain sets that are unstable, drawn at their nominal ``B_n T``. Legend below.
     """
+    if rule not in _ROMAN:
+        raise ValueError(f"rule must be one of ['type1', 'type2'], got {rule!r}")
     d = curves[curves["rule"] == rule]
     mk = marks[marks["rule"] == rule]
-    with plt.rc_context(_STYLE):
-        fig, ax = plt.subplots(figsize=(7.0, 4.8), layout="constrained")
-        for order, color in ((2, "C0"), (3, "C3")):
-            c = d[d["order"] == order]
-            name = _HUANG_TRACKERS[order]
-            closed = "eq 14" if order == 2 else "eqs 8–13 (reconstructed)"
+    fig, ax = plt.subplots(figsize=(WIDTH, 5.4))
+    unstable_all = []
+    for order in (2, 3):
+        color = family_colour(_family(rule, order))
+        c = d[d["order"] == order]
+        name = _HUANG_TRACKERS[order]
+        closed = "eq 14" if order == 2 else "eqs 8–13 (reconstructed)"
+        ax.semilogy(c["xi"], c["bnT_exact"], "-", color=color, label=f"{name}: exact (Lyapunov)")
+        ax.semilogy(
+            c["xi"].iloc[::6], c["bnT_closed"].iloc[::6], "o", ms=3.5, mfc="none",
+            color=color, label=f"{name}: {closed}",
+        )
+        if order == 3:
             ax.semilogy(
-                c["xi"], c["bnT_exact"], "-", color=color, label=f"{name}: exact (Lyapunov)"
+                c["xi"], c["bnT_eq13_printed"], "--", lw=0.9, color=color, alpha=0.7,
+                label="α-β-γ: eq 13 read literally",
             )
+        m = mk[mk["order"] == order]
+        fin = m[np.isfinite(m["enbw_exact"])]
+        ax.semilogy(
+            fin["xi_printed"], fin["enbw_exact"] * dt, "s", color=color, ms=6,
+            label=f"{name}: Table gains (printed ξ, true B_n·T)",
+        )
+        uns = m[~np.isfinite(m["enbw_exact"])]
+        if len(uns):
             ax.semilogy(
-                c["xi"].iloc[::6], c["bnT_closed"].iloc[::6], "o", ms=3.5, mfc="none",
-                color=color, label=f"{name}: {closed}",
+                uns["xi_printed"], uns["bn_nominal_hz"] * dt, "v", color=color, ms=7,
+                label=f"{name}: Table gains, unstable (printed ξ, nominal B_n·T)",
             )
-            if order == 3:
-                ax.semilogy(
-                    c["xi"], c["bnT_eq13_printed"], "--", lw=0.9, color="C1",
-                    label="α-β-γ: eq 13 read literally",
-                )
-            m = mk[mk["order"] == order]
-            fin = m[np.isfinite(m["enbw_exact"])]
-            ax.semilogy(
-                fin["xi_printed"], fin["enbw_exact"] * dt,
-                "s", color=color, ms=6, label=f"{name}: Table gains (printed ξ, true B_n T)",
-            )
-            ax.semilogy(
-                m["xi_nominal"], m["bn_nominal_hz"] * dt, "x", color="k", ms=7,
-                label="ξ that gives the nominal ENBW" if order == 2 else None,
-            )
-            for r in m[~np.isfinite(m["enbw_exact"])].itertuples(index=False):
-                ax.annotate(
-                    f"printed ξ={r.xi_printed:g}: unstable", (r.xi_printed, r.bn_nominal_hz * dt),
-                    xytext=(5, 5), textcoords="offset points", fontsize=7, color=color,
-                )
-                ax.plot([r.xi_printed], [r.bn_nominal_hz * dt], "v", color=color, ms=6)
-        for bn in sorted(set(mk["bn_nominal_hz"])):
-            ax.axhline(bn * dt, color="0.6", lw=0.6, ls=":")
-        ax.set_xlabel("ξ (smoothing factor)")
-        ax.set_ylabel("B_n·T (one-sided ENBW × sample interval)")
-        ax.set_xlim(0, 1)
-        ax.legend(loc="best", fontsize=7)
-        if title:
-            ax.set_title(title, fontsize=9)
+            unstable_all += [f"{name} at printed ξ = {x:g}" for x in uns["xi_printed"]]
+        ax.semilogy(
+            m["xi_nominal"], m["bn_nominal_hz"] * dt, "x", color=REFERENCE["truth"], ms=7,
+            label="ξ that gives the nominal ENBW" if order == 2 else None,
+        )
+    nominal = sorted(set(mk["bn_nominal_hz"]))
+    for i, bn in enumerate(nominal):
+        ax.axhline(bn * dt, color=REFERENCE["level"], lw=0.6, ls=":",
+                   label="nominal ENBWs of the table" if i == 0 else None)
+    ax.set_xlabel("ξ (smoothing factor)")
+    ax.set_ylabel("B_n·T (one-sided ENBW × sample interval)")
+    ax.set_xlim(0, 1)
+    if title:
+        suptitle(fig, title)
+    # the legend in two columns, α-β (and the references) left, α-β-γ right
+    h, lab = ax.get_legend_handles_labels()
+    left = [i for i, x in enumerate(lab) if not x.startswith("α-β-γ")]
+    right = [i for i, x in enumerate(lab) if x.startswith("α-β-γ")]
+    blank = plt.Line2D([], [], alpha=0.0)
+    n = max(len(left), len(right))
+    hs = [h[i] for i in left] + [blank] * (n - len(left)) + [h[i] for i in right]
+    hs += [blank] * (n - len(right))
+    ls = [lab[i] for i in left] + [""] * (n - len(left)) + [lab[i] for i in right]
+    ls += [""] * (n - len(right))
+    legend_outside(fig, hs, ls, side="bottom", ncol=2)
+    ab, abg = (d[d["order"] == o] for o in (2, 3))
+    describe(
+        fig,
+        f"{title}. B_n·T on a log axis against ξ from 0 to 1 for the type {_ROMAN[rule]} "
+        f"α-β and α-β-γ trackers: exact curves with the closed forms on them, B_n·T "
+        f"rising from {ab['bnT_exact'].min():.2g} to {ab['bnT_exact'].max():.2g} (α-β) and "
+        f"from {abg['bnT_exact'].min():.2g} to {abg['bnT_exact'].max():.2g} (α-β-γ); eq 13 "
+        f"read literally falls far below. The table's gain sets are marked at their printed "
+        f"ξ; nominal ENBWs {', '.join(f'{b:g}' for b in nominal)} Hz dotted"
+        + (f"; unstable: {'; '.join(unstable_all)}." if unstable_all else "."),
+    )
     return fig
 
 
+@styled
 def huang_thermal_figure(thermal: pd.DataFrame, budget_m: float, limits: dict, title: str = ""):
     """Thermal-noise range error against ENBW (seed 002, Fig 4).
 
@@ -102,23 +150,33 @@ def huang_thermal_figure(thermal: pd.DataFrame, budget_m: float, limits: dict, t
     limits : dict
         ``{label: ENBW in Hz}`` vertical lines (the paper's 40 Hz, the computed limits).
     """
-    with plt.rc_context(_STYLE):
-        fig, ax = plt.subplots(figsize=(7.0, 4.6), layout="constrained")
-        ax.loglog(thermal["enbw_hz"], thermal["sigma_printed_m"], "C0-",
-                  label="printed formula τc / (2k √((S/N)₀ F_r / B_n))")
-        ax.loglog(thermal["enbw_hz"], thermal["sigma_barton_m"], "C3--",
-                  label="Barton's 2E/N₀ form (= printed formula at the two-sided ENBW)")
-        ax.axhline(budget_m, color="0.3", lw=0.8, ls=":", label=f"σ = {budget_m:g} m")
-        for i, (label, bn) in enumerate(limits.items()):
-            ax.axvline(bn, color=f"C{i + 4}", lw=0.9, ls="-.", label=f"{label}: {bn:.1f} Hz")
-        ax.set_xlabel("ENBW B_n (Hz, one-sided)")
-        ax.set_ylabel("thermal-noise range error σ (m)")
-        ax.legend(loc="upper left", fontsize=7)
-        if title:
-            ax.set_title(title, fontsize=9)
+    fig, ax = plt.subplots(figsize=(WIDTH, 5.6))
+    ax.loglog(thermal["enbw_hz"], thermal["sigma_printed_m"], "-", color="C0",
+              label="printed formula τc / (2k √((S/N)₀ F_r / B_n))")
+    ax.loglog(thermal["enbw_hz"], thermal["sigma_barton_m"], "--", color="C3",
+              label="Barton's 2E/N₀ form (= printed formula at the two-sided ENBW)")
+    ax.axhline(budget_m, color=REFERENCE["level"], lw=0.8, ls=":", label=f"σ = {budget_m:g} m")
+    styles = [("k", "-."), ("C0", (0, (1, 1.5))), ("C3", (0, (4, 1.5)))]
+    for i, (label, bn) in enumerate(limits.items()):
+        col, ls = styles[i % len(styles)]
+        ax.axvline(bn, color=col, lw=1.0, ls=ls, label=f"{label}: {bn:.1f} Hz")
+    ax.set_xlabel("ENBW B_n (Hz, one-sided)")
+    ax.set_ylabel("thermal-noise range error σ (m)")
+    if title:
+        suptitle(fig, title)
+    legend_outside(fig, side="bottom", ncol=1)
+    lim = "; ".join(f"{k}: {v:.1f} Hz" for k, v in limits.items())
+    describe(
+        fig,
+        f"{title}. Log-log: thermal-noise range error σ (m) against ENBW from "
+        f"{thermal['enbw_hz'].min():g} to {thermal['enbw_hz'].max():g} Hz, the printed formula "
+        f"and Barton's form (lower by √2), both rising as √B_n; the {budget_m:g} m budget "
+        f"dotted; vertical lines at {lim}.",
+    )
     return fig
 
 
+@styled
 def huang_track_figure(track: pd.DataFrame, panels: list, title: str = "", noisy: bool = True):
     """Range-tracking errors of the simulated track (seed 002, Figs 5-7).
 
@@ -128,31 +186,60 @@ def huang_track_figure(track: pd.DataFrame, panels: list, title: str = "", noisy
         ``track.csv``: ``t`` and per tracker ``err_<name>`` (with noise) and
         ``lag_<name>`` (noise-free), truth minus predicted position, m.
     panels : list of (str, list of (name, label)[, list of (y, label)])
-        One panel per entry: its title, the trackers to draw and, optionally, horizontal
+        One row per entry: its title, the trackers to draw and, optionally, horizontal
         reference levels (m) drawn dashed.
     noisy : bool
-        Draw the noisy error (thin) under the noise-free one (thick).
+        Add a right-hand column with the error under thermal noise (thin) and the
+        noise-free error on top; the left column shows the noise-free error on its own
+        scale, so that a small lag is never hidden under the noise.
     """
-    style = dict(_STYLE, **{"figure.figsize": (8.0, 2.6 * len(panels) + 0.6)})
-    with plt.rc_context(style):
-        fig, axes = plt.subplots(len(panels), 1, layout="constrained", squeeze=False)
-        t = track["t"].to_numpy()
-        for ax, (ptitle, names, *refs) in zip(axes[:, 0], panels, strict=True):
-            for j, (y, label) in enumerate(refs[0] if refs else []):
-                ax.axhline(y, color=f"C{j + 5}", lw=1.0, ls="--", label=label)
-            for i, (name, label) in enumerate(names):
-                if noisy:
-                    ax.plot(t, track[f"err_{name}"], color=f"C{i}", lw=0.4, alpha=0.45)
-                ax.plot(
-                    t, track[f"lag_{name}"], color=f"C{i}", lw=1.6, label=f"{label} (noise-free)"
-                )
-            ax.axhline(0.0, color="k", lw=0.6)
-            ax.set_ylabel("range error R − R_p (m)")
-            ax.set_title(ptitle, fontsize=9)
-            ax.legend(loc="best", fontsize=7)
-        axes[-1, 0].set_xlabel("time (s)")
-        if title:
-            fig.suptitle(title, fontsize=9)
+    t = track["t"].to_numpy()
+    ncols = 2 if noisy else 1
+    fig = plt.figure(figsize=(WIDTH, 2.75 * len(panels) + 0.5))
+    rows = fig.subfigures(len(panels), 1, hspace=0.02) if len(panels) > 1 else [fig]
+    alt = []
+    for sub, (ptitle, names, *refs) in zip(rows, panels, strict=True):
+        axes = sub.subplots(1, ncols, sharex=True, squeeze=False)[0]
+        for j, (y, label) in enumerate(refs[0] if refs else []):
+            for ax in axes:
+                ax.axhline(y, color=REFERENCE["level"], lw=0.9, ls=("--", ":")[j % 2],
+                           label=label if ax is axes[0] else None)
+        parts = []
+        if noisy:  # all the noise first, the noise-free curves over it
+            for name, _ in names:
+                col = family_colour(_tracker_family(name))
+                axes[1].plot(t, track[f"err_{name}"], color=col, lw=0.4, alpha=0.4)
+        for name, label in names:
+            col = family_colour(_tracker_family(name))
+            lag = track[f"lag_{name}"].to_numpy()
+            axes[0].plot(t, lag, color=col, lw=1.6, label=f"{label}")
+            if noisy:
+                err = track[f"err_{name}"].to_numpy()
+                axes[1].plot(t, lag, color=col, lw=1.4)
+                parts.append(f"{label}: noise-free error from {lag.min():.3g} to "
+                             f"{lag.max():.3g} m, ending at {lag[-1]:.3g} m; with noise "
+                             f"RMS {np.sqrt(np.mean(err**2)):.3g} m")
+            else:
+                parts.append(f"{label}: error from {lag.min():.3g} to {lag.max():.3g} m")
+        for ax in axes:
+            ax.axhline(0.0, color=REFERENCE["zero"], lw=0.6)
+            ax.set_xlabel("time (s)")
+        axes[0].set_ylabel("range error R − R_p (m)")
+        axes[0].set_title("noise-free", loc="left")
+        if noisy:
+            axes[1].set_title("with thermal noise (thin); noise-free on top", loc="left")
+        sub.suptitle(ptitle, fontsize=9, ha="left", x=0.01)
+        legend_outside(sub, side="bottom", ncol=2)
+        alt.append(f"{ptitle}: " + "; ".join(parts))
+    if title:
+        suptitle(fig, title)
+    describe(
+        fig,
+        f"{title}. {len(panels)} rows of range error R − R_p (m) against time "
+        f"(0 to {t[-1]:g} s), noise-free on the left"
+        + (", with thermal noise on the right" if noisy else "")
+        + ". " + ". ".join(alt) + ".",
+    )
     return fig
 
 
