@@ -17,6 +17,7 @@ import numpy as np
 import pandas as pd
 
 from .._checks import AbglibValueError
+from ..gains import Gains
 from . import metrics, variants
 
 __all__ = [
@@ -109,12 +110,13 @@ def run_cell(
         for c in dataset.coords
     }
     gains, runner = None, None
-    if rule.kind == "gains":
-        gains = variants.variant_gains(spec, dataset.dt, n, variant)
+    built = variants.variant_build(spec, dataset.dt, n, variant)
+    if isinstance(built, Gains):
+        gains = built
         if init == "three_point" and np.all(np.asarray(gains.gamma) == 0.0):
             init = "two_point"
     else:
-        runner = variants.variant_runner(spec, dataset.dt, n, variant)
+        runner = built
     rows = metrics.evaluate_cell(
         coords,
         dataset.dt,

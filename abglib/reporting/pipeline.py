@@ -8,6 +8,7 @@ explaining a config that fails its schema, and sending a script's stderr to its 
 from __future__ import annotations
 
 import contextlib
+import functools
 import logging
 import os
 import sys
@@ -22,12 +23,16 @@ from ..gains import Gains
 
 __all__ = [
     "atomic_output",
+    "code_fingerprint",
+    "code_hash",
     "DESIGNS",
     "OUTPUT_LABELS",
     "config_errors",
     "curve_label",
     "gains_from_spec",
+    "job_log",
     "log_to",
+    "module_closure",
     "prepend_pythonpath",
     "wt_grid",
 ]
@@ -146,6 +151,40 @@ def log_to(path) -> logging.Logger:
     return logger
 
 
+class JobFailed(RuntimeError):
+    """A job run inside Snakemake's own process failed; the message names its log."""
+
+
+@contextlib.contextmanager
+def job_log(path, name: str = "job"):
+    """The log of a job that runs inside Snakemake's process (a ``run:`` block).
+
+    Yields a logger writing to ``path`` (truncated) and nowhere else, so that jobs running
+    side by side in threads keep separate logs and the process's ``sys.stderr`` is left
+    alone (unlike :func:`log_to`, which is for a script's own process). An exception is
+    written to the log with its traceback and raised again as :class:`JobFailed` with its
+    message and the log's path.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    logger = logging.getLogger(f"abglib.job.{path.resolve()}")
+    logger.propagate = False
+    logger.setLevel(logging.INFO)
+    handler = logging.FileHandler(path, mode="w", encoding="utf-8")
+    logger.handlers[:] = [handler]
+    try:
+        yield logger
+    except Exception as exc:
+        logger.error("%s failed", name, exc_info=True)
+        raise JobFailed(
+            f"{name}: {type(exc).__name__}: {exc}\n(full traceback in {path})"
+        ) from None
+    finally:
+        handler.close()
+        logger.handlers.clear()
+        logging.Logger.manager.loggerDict.pop(logger.name, None)
+
+
 def prepend_pythonpath(path) -> None:
     """Put ``path`` first on ``PYTHONPATH`` for subprocesses (the workflow's jobs).
 
@@ -179,20 +218,149 @@ def atomic_output(path):
         raise
 
 
-def library_hash(package_dir) -> str:
-    """SHA-256 of the abglib sources (every ``*.py`` below ``package_dir``, by relative path
-    and content): a rule parameter, so that Snakemake reruns a rule when the library it
-    calls changes, not only when its own script does."""
+# ----------------------------------------------------------------- code hashes
+def code_fingerprint(path) -> str:
+    """SHA-256 of one Python file's code: its syntax tree without docstrings.
+
+    Comments, blank lines, line numbers and docstrings (of the module, its classes and
+    functions) do not enter it, so editing them changes nothing; any other edit does.
+    The tree's text form is Python's (``ast.dump``), so a new Python version may change
+    every fingerprint once.
+    """
+    return _parsed(Path(path))[0]
+
+
+def _parsed(path: Path) -> tuple[str, object]:
+    """(fingerprint, syntax tree) of a file, cached while its size and mtime stay."""
+    try:
+        st = path.stat()
+    except OSError as exc:
+        raise AbglibValueError(f"cannot read Python source {path}: {exc}") from None
+    return _parse_cached(str(path.resolve()), st.st_mtime_ns, st.st_size)
+
+
+@functools.lru_cache(maxsize=4096)
+def _parse_cached(path: str, mtime_ns: int, size: int) -> tuple[str, object]:
+    import ast
     import hashlib
 
-    root = Path(package_dir)
-    files = sorted(root.rglob("*.py"))
-    if not files:
-        raise AbglibValueError(f"no Python sources below {root}: cannot hash the library")
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+        tree = ast.parse(text, filename=path)
+    except (OSError, SyntaxError, ValueError) as exc:
+        raise AbglibValueError(f"cannot read Python source {path}: {exc}") from None
+    imports = [n for n in ast.walk(tree) if isinstance(n, (ast.Import, ast.ImportFrom))]
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        if (
+            isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef))
+            and body
+            and isinstance(body[0], ast.Expr)
+            and isinstance(body[0].value, ast.Constant)
+            and isinstance(body[0].value.value, str)
+        ):
+            node.body = body[1:] or [ast.Pass()]
+    digest = hashlib.sha256(ast.dump(tree, include_attributes=False).encode()).hexdigest()
+    return digest, imports
+
+
+def _module_file(package_dir: Path, name: str) -> Path | None:
+    """The file of module ``name`` (dotted, starting with the package's name), or None."""
+    parts = name.split(".")
+    if parts[0] != package_dir.name:
+        return None
+    base = package_dir.joinpath(*parts[1:])
+    for f in (base / "__init__.py", base.with_suffix(".py")):
+        if f.is_file():
+            return f
+    return None
+
+
+def _imports(path: Path, module: str | None, package: str) -> set[str]:
+    """Dotted names of every module of ``package`` that ``path`` imports, anywhere in it
+    (lazy imports inside functions included), with ``from X import y`` counted both as X
+    and as X.y (y may be a submodule)."""
+    import ast
+
+    is_pkg = path.name == "__init__.py"
+    names: set[str] = set()
+    for node in _parsed(path)[1]:
+        if isinstance(node, ast.Import):
+            names.update(a.name for a in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                if module is None:
+                    continue  # a relative import outside the package: not ours
+                parts = module.split(".")
+                keep = len(parts) - node.level + (1 if is_pkg else 0)
+                base = ".".join(parts[:keep] + ([node.module] if node.module else []))
+            else:
+                base = node.module or ""
+            names.add(base)
+            names.update(f"{base}.{a.name}" for a in node.names if a.name != "*")
+    out = set()
+    for n in names:
+        if n == package or n.startswith(package + "."):
+            parts = n.split(".")
+            # importing a.b.c runs a/__init__, a/b/__init__ too
+            out.update(".".join(parts[:i]) for i in range(1, len(parts) + 1))
+    return out
+
+
+def module_closure(sources, package_dir) -> list[Path]:
+    """Every file of the package at ``package_dir`` that ``sources`` import, transitively.
+
+    ``sources`` are dotted module names of the package (``'abglib.bench.benchmark'``) or
+    paths of Python files anywhere (a workflow script, a notebook in jupytext form, a
+    user's own module); the imports are read from the source (statically, no code runs),
+    every parent package's ``__init__`` included. Returns the package's files, sorted.
+    """
+    root = Path(package_dir).resolve()
+    package = root.name
+    seen: dict[str, Path] = {}
+    todo: list[tuple[str | None, Path]] = []
+    for src in sources:
+        f = _module_file(root, str(src)) if isinstance(src, str) and "/" not in src else None
+        if f is not None:
+            todo.append((str(src), f))
+        elif Path(src).is_file():
+            todo.append((None, Path(src)))
+        else:
+            raise AbglibValueError(
+                f"code source {src!r} is neither a module of {package} nor a file"
+            )
+    while todo:
+        name, path = todo.pop()
+        deps = _imports(path, name, package)
+        if name is not None:
+            if name in seen:
+                continue
+            seen[name] = path
+            # importing a.b.c runs a/__init__ and a/b/__init__ first
+            parts = name.split(".")
+            deps |= {".".join(parts[:i]) for i in range(1, len(parts))}
+        for dep in deps:
+            f = _module_file(root, dep)
+            if f is not None and dep not in seen:
+                todo.append((dep, f))
+    return sorted(set(seen.values()))
+
+
+def code_hash(*sources, package_dir, extra=()) -> str:
+    """SHA-256 of the code a job runs: the package files ``sources`` import
+    (:func:`module_closure`) and the ``extra`` files (e.g. a user's own variant module),
+    each by :func:`code_fingerprint`.
+
+    A rule parameter: Snakemake reruns the rule when the library code it uses changes,
+    and only then; an edit to a docstring or a comment, or to a module it does not
+    import, reruns nothing.
+    """
+    import hashlib
+
+    root = Path(package_dir).resolve()
     h = hashlib.sha256()
-    for f in files:
-        h.update(f.relative_to(root).as_posix().encode())
-        h.update(b"\0")
-        h.update(f.read_bytes())
-        h.update(b"\0")
+    for f in module_closure(sources, root):
+        h.update(f"{f.relative_to(root.parent).as_posix()}\0{code_fingerprint(f)}\0".encode())
+    for f in extra:
+        h.update(f"extra\0{code_fingerprint(f)}\0".encode())
     return h.hexdigest()
