@@ -12,13 +12,16 @@ the noise-versus-lag points of each design family.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from .._checks import AbglibValueError
 from ..gains import Gains
 from . import metrics, variants
+
+if TYPE_CHECKING:  # pandas is imported where it is used: the workflow's parse needs none
+    import pandas as pd
 
 __all__ = [
     "cell_dataset",
@@ -95,6 +98,8 @@ def run_cell(
         As :func:`abglib.metrics.evaluate_cell`. ``init="three_point"`` needs gamma > 0,
         so alpha-beta variants fall back to ``"two_point"``.
     """
+    import pandas as pd
+
     rule, params = variants.variant_rule(spec, variant)
     n = int(np.shape(dataset.t)[0])
     noise = dict(dataset.noise)
@@ -183,6 +188,8 @@ def league_table(
     cells: Sequence[pd.DataFrame], threshold: float, rank_by: str = "rmse_x_smooth"
 ) -> pd.DataFrame:
     """Per scenario, the variants ranked by ``rank_by`` (``all`` row; diverged last)."""
+    import pandas as pd
+
     if not cells:
         raise AbglibValueError("league_table needs at least one cell")
     rows = []
@@ -203,6 +210,8 @@ def league_table(
 def tradeoff_table(cells: Sequence[pd.DataFrame], output: str = "x_smooth") -> pd.DataFrame:
     """Noise-versus-lag points: per (scenario, variant), the RMS of the noise part and of
     the lag part of the error (``all`` row; linear, non-diverged trackers only)."""
+    import pandas as pd
+
     rows = []
     for cell in cells:
         rec = cell[cell["coord"] == "all"].iloc[0]
@@ -246,6 +255,8 @@ def tradeoff_sweep(
         position (``all`` row), one row per (scenario, family, value); points where the
         rule cannot realise the value for the scenario's ``dt`` are skipped.
     """
+    import pandas as pd
+
     rows = []
     for label, fam in families.items():
         fam = dict(fam)
