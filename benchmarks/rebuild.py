@@ -74,7 +74,11 @@ def rule_times(workdir: Path) -> list[dict]:
             continue
         rel = f.relative_to(workdir / "benchmarks" / "results")
         stage = rel.parts[0]
-        name = "benchmark_cell" if "cells" in rel.parts else f"{stage}/{re.sub(r'_?fig[1-6]$', '', f.stem)}"
+        name = (
+            "benchmark_cell"
+            if "cells" in rel.parts
+            else f"{stage}/{re.sub(r'_?fig[1-6]$', '', f.stem)}"
+        )
         per[name].append(float(rows[-1]["s"]))
     out = [
         {"rule": k, "jobs": len(v), "total_s": round(sum(v), 2), "max_s": round(max(v), 2)}
@@ -109,7 +113,9 @@ def main(argv=None) -> None:
     if not (args.small or args.skip_large):
         large = base / "large"
         target = f"results/reports/v{_version()}/benchmark/index.html"
-        wall, log = run(large, [*configs, REPO / "config" / "benchmark_large.yaml"], args.cores, [target])
+        wall, log = run(
+            large, [*configs, REPO / "config" / "benchmark_large.yaml"], args.cores, [target]
+        )
         n_cells = len(list((large / "results" / "benchmark" / "cells").rglob("*.csv")))
         rows.append(("large", f"{name}+benchmark_large", wall, jobs_done(log)))
         print(f"large sweep: {wall:.1f} s, {jobs_done(log)} jobs, {n_cells} cells", flush=True)
@@ -129,7 +135,9 @@ def main(argv=None) -> None:
         w.writerows(per_rule)
     print("time per rule (clean build, benchmark: files):")
     for r in per_rule[:15]:
-        print(f"  {r['rule']:<40} {r['jobs']:>4} jobs {r['total_s']:>8.1f} s (max {r['max_s']:.1f})")
+        print(
+            f"  {r['rule']:<40} {r['jobs']:>4} jobs {r['total_s']:>8.1f} s (max {r['max_s']:.1f})"
+        )
     print(f"wrote {OUT / f'rebuild{suffix}.csv'} and {OUT / f'rebuild_rules{suffix}.csv'}")
 
 

@@ -12,7 +12,7 @@ from abglib.bench.variants import (
     variant_build,
 )
 
-USER_CODE = '''
+USER_CODE = """
 import numpy as np
 from abglib import Gains, track
 
@@ -44,7 +44,7 @@ def bad_shape(dt, n_samples):
 
 def broken(dt, n_samples):
     raise RuntimeError("boom")
-'''
+"""
 
 
 @pytest.fixture
