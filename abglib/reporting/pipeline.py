@@ -195,6 +195,17 @@ def prepend_pythonpath(path) -> None:
     os.environ["PYTHONPATH"] = os.pathsep.join(dict.fromkeys(parts))
 
 
+def _read_umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+# read once, when the module is imported: os.umask can only be read by setting it, which
+# would race with other threads creating files (jobs run in threads of Snakemake's process)
+_UMASK = _read_umask()
+
+
 @contextlib.contextmanager
 def atomic_output(path):
     """Yield a temporary path beside ``path``; on success it replaces ``path`` atomically.
@@ -209,9 +220,7 @@ def atomic_output(path):
     os.close(fd)
     try:
         yield Path(tmp)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
+        os.chmod(tmp, 0o666 & ~_UMASK)
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
