@@ -89,3 +89,18 @@ def test_the_study_of_a_document_does_not_depend_on_its_claims():
     cell = _names(module_closure(["abglib.bench.cell"], pkg), pkg)
     assert "engine.py" in cell and "bench/metrics.py" in cell
     assert not [f for f in cell if f.startswith("replications/")]
+
+
+def test_the_disk_cache_changes_no_hash(tmp_path):
+    pkg = _package(tmp_path)
+    cache = tmp_path / "cache.json"
+    h = code_hash("pkg.sub.b", package_dir=pkg)
+    assert code_hash("pkg.sub.b", package_dir=pkg, cache=cache) == h
+    assert cache.is_file() and "core.py" in cache.read_text()
+    assert code_hash("pkg.sub.b", package_dir=pkg, cache=cache) == h
+    (pkg / "other.py").write_text("def h():\n    return 3\n")  # new size: a new entry
+    h2 = code_hash("pkg.sub.b", package_dir=pkg, cache=cache)
+    assert h2 != h
+    cache.write_text("{not json")
+    code_hash("pkg.core", package_dir=pkg, cache=tmp_path / "other.json")
+    assert code_hash("pkg.sub.b", package_dir=pkg, cache=cache) == h2

@@ -239,17 +239,29 @@ def code_fingerprint(path) -> str:
     return _parsed(Path(path))[0]
 
 
-def _parsed(path: Path) -> tuple[str, object]:
-    """(fingerprint, syntax tree) of a file, cached while its size and mtime stay."""
+#: On-disk cache of fingerprints and imports (see :func:`code_hash`'s ``cache``).
+_DISK: dict = {"path": None, "entries": {}, "dirty": False}
+
+
+def _parsed(path: Path) -> tuple[str, list]:
+    """(fingerprint, imports) of a file, cached while its size and mtime stay; an import
+    is ``(level, module or '', names)`` (level 0 and names ``()`` for ``import x``)."""
     try:
         st = path.stat()
     except OSError as exc:
         raise AbglibValueError(f"cannot read Python source {path}: {exc}") from None
-    return _parse_cached(str(path.resolve()), st.st_mtime_ns, st.st_size)
+    key = f"{path.resolve()}|{st.st_mtime_ns}|{st.st_size}"
+    hit = _DISK["entries"].get(key)
+    if hit is None:
+        hit = _parse_cached(str(path.resolve()), st.st_mtime_ns, st.st_size)
+        if _DISK["path"] is not None:
+            _DISK["entries"][key] = hit
+            _DISK["dirty"] = True
+    return hit
 
 
 @functools.lru_cache(maxsize=4096)
-def _parse_cached(path: str, mtime_ns: int, size: int) -> tuple[str, object]:
+def _parse_cached(path: str, mtime_ns: int, size: int) -> tuple[str, list]:
     import ast
     import hashlib
 
@@ -258,7 +270,12 @@ def _parse_cached(path: str, mtime_ns: int, size: int) -> tuple[str, object]:
         tree = ast.parse(text, filename=path)
     except (OSError, SyntaxError, ValueError) as exc:
         raise AbglibValueError(f"cannot read Python source {path}: {exc}") from None
-    imports = [n for n in ast.walk(tree) if isinstance(n, (ast.Import, ast.ImportFrom))]
+    imports = []
+    for n in ast.walk(tree):
+        if isinstance(n, ast.Import):
+            imports.extend([0, a.name, []] for a in n.names)
+        elif isinstance(n, ast.ImportFrom):
+            imports.append([n.level, n.module or "", [a.name for a in n.names]])
     for node in ast.walk(tree):
         body = getattr(node, "body", None)
         if (
@@ -271,6 +288,33 @@ def _parse_cached(path: str, mtime_ns: int, size: int) -> tuple[str, object]:
             node.body = body[1:] or [ast.Pass()]
     digest = hashlib.sha256(ast.dump(tree, include_attributes=False).encode()).hexdigest()
     return digest, imports
+
+
+def _use_disk_cache(cache) -> None:
+    import json
+
+    cache = None if cache is None else str(cache)
+    if cache == _DISK["path"]:
+        return
+    _DISK.update(path=cache, entries={}, dirty=False)
+    if cache is not None:
+        try:
+            _DISK["entries"] = json.loads(Path(cache).read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            pass
+
+
+def _save_disk_cache() -> None:
+    import json
+
+    if _DISK["path"] is None or not _DISK["dirty"]:
+        return
+    try:
+        with atomic_output(_DISK["path"]) as tmp:
+            tmp.write_text(json.dumps(_DISK["entries"]), encoding="utf-8")
+        _DISK["dirty"] = False
+    except OSError:
+        pass  # a cache: never worth failing a build for
 
 
 def _module_file(package_dir: Path, name: str) -> Path | None:
@@ -289,24 +333,22 @@ def _imports(path: Path, module: str | None, package: str) -> set[str]:
     """Dotted names of every module of ``package`` that ``path`` imports, anywhere in it
     (lazy imports inside functions included), with ``from X import y`` counted both as X
     and as X.y (y may be a submodule)."""
-    import ast
-
     is_pkg = path.name == "__init__.py"
     names: set[str] = set()
-    for node in _parsed(path)[1]:
-        if isinstance(node, ast.Import):
-            names.update(a.name for a in node.names)
-        elif isinstance(node, ast.ImportFrom):
-            if node.level:
-                if module is None:
-                    continue  # a relative import outside the package: not ours
-                parts = module.split(".")
-                keep = len(parts) - node.level + (1 if is_pkg else 0)
-                base = ".".join(parts[:keep] + ([node.module] if node.module else []))
-            else:
-                base = node.module or ""
-            names.add(base)
-            names.update(f"{base}.{a.name}" for a in node.names if a.name != "*")
+    for level, mod, imported in _parsed(path)[1]:
+        if not imported:  # import x.y
+            names.add(mod)
+            continue
+        if level:
+            if module is None:
+                continue  # a relative import outside the package: not ours
+            parts = module.split(".")
+            keep = len(parts) - level + (1 if is_pkg else 0)
+            base = ".".join(parts[:keep] + ([mod] if mod else []))
+        else:
+            base = mod
+        names.add(base)
+        names.update(f"{base}.{a}" for a in imported if a != "*")
     out = set()
     for n in names:
         if n == package or n.startswith(package + "."):
@@ -355,21 +397,25 @@ def module_closure(sources, package_dir) -> list[Path]:
     return sorted(set(seen.values()))
 
 
-def code_hash(*sources, package_dir, extra=()) -> str:
+def code_hash(*sources, package_dir, extra=(), cache=None) -> str:
     """SHA-256 of the code a job runs: the package files ``sources`` import
     (:func:`module_closure`) and the ``extra`` files (e.g. a user's own variant module),
     each by :func:`code_fingerprint`.
 
     A rule parameter: Snakemake reruns the rule when the library code it uses changes,
     and only then; an edit to a docstring or a comment, or to a module it does not
-    import, reruns nothing.
+    import, reruns nothing. ``cache``: a JSON file keeping each file's fingerprint and
+    imports by path, size and mtime, so that a no-op build parses nothing (a missing or
+    unreadable cache is rebuilt; the hash never depends on it).
     """
     import hashlib
 
+    _use_disk_cache(cache)
     root = Path(package_dir).resolve()
     h = hashlib.sha256()
     for f in module_closure(sources, root):
         h.update(f"{f.relative_to(root.parent).as_posix()}\0{code_fingerprint(f)}\0".encode())
     for f in extra:
         h.update(f"extra\0{code_fingerprint(f)}\0".encode())
+    _save_disk_cache()
     return h.hexdigest()

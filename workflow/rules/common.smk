@@ -53,6 +53,8 @@ NOTEBOOKS = Path(workflow.basedir) / "workflow" / "notebooks"
 ABGLIB_DIR = Path(workflow.basedir) / "abglib"
 SCRIPTS_DIR = Path(workflow.basedir) / "workflow" / "scripts"
 _CODE_HASHES = {}
+# parsed files by path, size and mtime: a no-op build parses no source (a cache only)
+CODE_CACHE = Path(".snakemake") / "abglib-code-cache.json"
 
 
 def code_of(*sources, extra=()):
@@ -69,7 +71,9 @@ def code_of(*sources, extra=()):
             )
             for s in sources
         ]
-        _CODE_HASHES[key] = code_hash(*paths, package_dir=ABGLIB_DIR, extra=extra)
+        _CODE_HASHES[key] = code_hash(
+            *paths, package_dir=ABGLIB_DIR, extra=extra, cache=CODE_CACHE
+        )
     return _CODE_HASHES[key]
 
 
