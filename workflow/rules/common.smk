@@ -46,7 +46,7 @@ REPO = workflow.basedir
 PUBLISHED = Path(workflow.basedir) / "data" / "published"
 NOTEBOOKS = Path(workflow.basedir) / "workflow" / "notebooks"
 
-# a rule depends on the library code it runs: its param `code` is the hash of the abglib
+# each rule depends on the library code it runs; its param `code` is the hash of the abglib
 # modules its script (or its run: block's module) imports, transitively, read statically
 # and without docstrings or comments (abglib.reporting.pipeline.code_hash). Editing a
 # docstring reruns nothing; editing a module reruns only the rules that import it.
