@@ -1,4 +1,4 @@
-"""Per-rule code hashes (abglib.reporting.pipeline): a rule depends on the abglib code it
+"""Per-rule code hashes (abglib.reporting.codehash): a rule depends on the abglib code it
 imports, read statically, without docstrings or comments."""
 
 from pathlib import Path
@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from abglib import AbglibValueError
-from abglib.reporting.pipeline import code_fingerprint, code_hash, module_closure
+from abglib.reporting.codehash import code_fingerprint, code_hash, module_closure
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -104,3 +104,16 @@ def test_the_disk_cache_changes_no_hash(tmp_path):
     cache.write_text("{not json")
     code_hash("pkg.core", package_dir=pkg, cache=tmp_path / "other.json")
     assert code_hash("pkg.sub.b", package_dir=pkg, cache=cache) == h2
+
+
+def test_no_job_imports_the_hash_machinery():
+    """Changing how code is hashed reruns no job: no script, notebook or run: module
+    imports abglib.reporting.codehash."""
+    pkg = REPO / "abglib"
+    sources = [
+        *map(str, (REPO / "workflow" / "scripts").glob("*.py")),
+        *map(str, (REPO / "workflow" / "notebooks").glob("*.py")),
+        "abglib.bench.cell",
+        "abglib.bench.datasets",
+    ]
+    assert "reporting/codehash.py" not in _names(module_closure(sources, pkg), pkg)

@@ -48,6 +48,7 @@ def _copy_repo(dest: Path) -> Path:
     import shutil
 
     ignore = shutil.ignore_patterns("__pycache__", "results", "*.tsv", ".snakemake")
+    dest.mkdir(parents=True)
     for name in COPIED:
         src = REPO / name
         if src.is_dir():
@@ -81,7 +82,6 @@ def test_an_edit_reruns_only_the_jobs_whose_code_it_changes(tmp_path):
     import abglib
 
     repo, work = _copy_repo(tmp_path / "repo"), tmp_path / "work"
-    (repo / "tests" / "data").mkdir(parents=True)
     targets = [
         f"results/reports/v{abglib.__version__}/steelman1978/index.html",
         "results/benchmark/cells/std_ab_a0.3/alwagih_w1.csv",

@@ -5,7 +5,8 @@ import sys
 from pathlib import Path
 
 import abglib
-from abglib.reporting.pipeline import code_hash, config_errors, prepend_pythonpath
+from abglib.reporting.codehash import code_hash
+from abglib.reporting.pipeline import config_errors, prepend_pythonpath
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
@@ -48,7 +49,7 @@ NOTEBOOKS = Path(workflow.basedir) / "workflow" / "notebooks"
 
 # each rule depends on the library code it runs; its param `code` is the hash of the abglib
 # modules its script (or its run: block's module) imports, transitively, read statically
-# and without docstrings or comments (abglib.reporting.pipeline.code_hash). Editing a
+# and without docstrings or comments (abglib.reporting.codehash.code_hash). Editing a
 # docstring reruns nothing; editing a module reruns only the rules that import it.
 ABGLIB_DIR = Path(workflow.basedir) / "abglib"
 SCRIPTS_DIR = Path(workflow.basedir) / "workflow" / "scripts"
