@@ -185,4 +185,5 @@ def test_a_users_own_tracker_runs_in_the_matrix(tmp_path):
     )
     bad = subprocess.run([*cmd, str(extra), "-n", league], capture_output=True, text=True)
     assert bad.returncode != 0
-    assert "variant 'typo'" in bad.stderr and "has no function 'my_gainz'" in bad.stderr
+    said = bad.stdout + bad.stderr
+    assert "variant 'typo'" in said and "has no function 'my_gainz'" in said
