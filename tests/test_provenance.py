@@ -79,19 +79,3 @@ def test_wt_grid():
     assert lg[1] == pytest.approx(np.sqrt(0.01 * np.pi))
     with pytest.raises(AbglibValueError, match="start > 0"):
         wt_grid({"start": 0.0, "stop_over_pi": 1.0, "n": 3}, "log")
-
-
-def test_library_hash_follows_content_not_mtime(tmp_path):
-    from abglib.reporting.pipeline import library_hash
-
-    (tmp_path / "sub").mkdir()
-    (tmp_path / "a.py").write_text("x = 1\n")
-    (tmp_path / "sub" / "b.py").write_text("y = 2\n")
-    h = library_hash(tmp_path)
-    assert len(h) == 64
-    (tmp_path / "a.py").touch()
-    assert library_hash(tmp_path) == h
-    (tmp_path / "sub" / "b.py").write_text("y = 3\n")
-    assert library_hash(tmp_path) != h
-    with pytest.raises(ValueError, match="no Python sources"):
-        library_hash(tmp_path / "sub" / "empty")

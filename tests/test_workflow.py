@@ -34,3 +34,156 @@ def test_dry_run_writes_nothing_under_reports():
     written = [f for line in outputs for f in line.split(", ")]
     assert not [f for f in written if f.startswith("reports/")], written[:5]
     assert any(f.startswith("results/reports/v") for f in written)
+
+
+# ------------------------------------------------------------------ what an edit reruns
+# A copy of the repository is built (a few targets of the small config: one document's
+# study, claims and report, one dataset, one benchmark cell), then edited; `snakemake -n`
+# must schedule exactly what the edit touches (issue 14).
+SMALL = REPO / "tests" / "data" / "config_small.yaml"
+COPIED = ("Snakefile", "config.yaml", "abglib", "workflow", "data", "profiles", "benchmarks")
+
+
+def _copy_repo(dest: Path) -> Path:
+    import shutil
+
+    ignore = shutil.ignore_patterns("__pycache__", "results", "*.tsv", ".snakemake")
+    dest.mkdir(parents=True)
+    for name in COPIED:
+        src = REPO / name
+        if src.is_dir():
+            shutil.copytree(src, dest / name, ignore=ignore)
+        else:
+            shutil.copy2(src, dest / name)
+    return dest
+
+
+def _in_copy(repo: Path, work: Path, *args):
+    exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
+    cmd = [exe, "-s", str(repo / "Snakefile"), "-d", str(work), "--configfile", str(SMALL)]
+    return subprocess.run([*cmd, *args], capture_output=True, text=True, timeout=600)
+
+
+def _scheduled_rules(stdout: str) -> set[str]:
+    return {
+        line.split()[1].rstrip(":")
+        for line in stdout.splitlines()
+        if line.strip().startswith(("rule ", "localrule ")) and line.strip().endswith(":")
+    }
+
+
+def _edit(path: Path, old: str, new: str) -> None:
+    text = path.read_text(encoding="utf-8")
+    assert old in text, f"{old!r} not in {path}"
+    path.write_text(text.replace(old, new, 1), encoding="utf-8")
+
+
+def test_an_edit_reruns_only_the_jobs_whose_code_it_changes(tmp_path):
+    import abglib
+
+    repo, work = _copy_repo(tmp_path / "repo"), tmp_path / "work"
+    targets = [
+        f"results/reports/v{abglib.__version__}/steelman1978/index.html",
+        "results/benchmark/cells/std_ab_a0.3/alwagih_w1.csv",
+    ]
+    built = _in_copy(repo, work, "-c2", *targets)
+    assert built.returncode == 0, built.stdout[-3000:] + built.stderr[-3000:]
+    assert (work / "results/steelman1978/comparison.csv").is_file()
+
+    def dry():
+        out = _in_copy(repo, work, "-n", *targets)
+        assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+        return _scheduled_rules(out.stdout)
+
+    assert dry() == set()
+    # a docstring and a comment of abglib/analysis: nothing reruns, no benchmark cell
+    variance = repo / "abglib" / "analysis" / "_variance.py"
+    _edit(variance, '"""Variance reduction factors', '"""Variance-reduction factors')
+    _edit(variance, "\nimport ", "\n# an edited comment\nimport ")
+    assert dry() == set()
+    # one claim's note: that document's claims job and its report, nothing else
+    claims = repo / "abglib" / "replications" / "steelman1978" / "claims.py"
+    _edit(claims, "as stated in the text", "as the text states it")
+    assert dry() == {"steelman1978_claims", "steelman_report"}
+    # a real change to abglib/analysis reruns what imports it, the cell included
+    _edit(variance, "\nimport ", "\n_EDITED = 1\nimport ")
+    rerun = dry()
+    assert {"benchmark_cell", "steelman1978_study", "steelman1978_claims"} <= rerun
+
+
+USER_TRACKERS = '''
+import numpy as np
+from abglib import Gains
+
+
+def my_gains(dt, n_samples, alpha):
+    """A fixed-gain alpha-beta tracker of the user's own design."""
+    return Gains(alpha, alpha**2 / (2.0 - alpha))
+
+
+def my_tracker(dt, n_samples, window):
+    """A moving average of the last ``window`` measurements (no velocity estimate)."""
+
+    def run(z):
+        c = np.cumsum(np.pad(z, ((0, 0), (window, 0))), axis=1)
+        x = (c[:, window:] - c[:, :-window]) / window
+        return {"x_smooth": x, "x_pred": np.concatenate([z[:, :1], x[:, :-1]], axis=1)}
+
+    return run
+'''
+
+
+def test_a_users_own_tracker_runs_in_the_matrix(tmp_path):
+    import pandas as pd
+
+    code = tmp_path / "elsewhere" / "my_trackers.py"
+    code.parent.mkdir()
+    code.write_text(USER_TRACKERS, encoding="utf-8")
+    extra = tmp_path / "extra.yaml"
+    extra.write_text(
+        "benchmark:\n  variants:\n"
+        f"    mine_ab: {{callable: '{code}:my_gains', alpha: 0.4}}\n"
+        f"    mine_ma: {{callable: '{code}:my_tracker', window: 4, family: moving average}}\n",
+        encoding="utf-8",
+    )
+    work = tmp_path / "work"
+    exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
+    cmd = [exe, "-s", str(REPO / "Snakefile"), "-d", str(work), "--configfile", str(SMALL)]
+    league = "results/benchmark/league.csv"
+    out = subprocess.run(
+        [*cmd, str(extra), "-c2", league, "results/benchmark/tradeoff.csv"],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+    table = pd.read_csv(work / league)
+    assert set(table["variant"]) == {"std_ab_a0.3", "kalata_ab_L1", "mine_ab", "mine_ma"}
+    assert (table.groupby("scenario")["rank"].max() == 4).all()
+    mine = table[table["variant"] == "mine_ab"].iloc[0]
+    assert mine["family"] == "user: my_gains" and mine["alpha"] == 0.4
+    # fixed gains are VRF-checked (60 samples are too few here); the user's tracker is not
+    assert mine["vrf_check"] in ("pass", "n/a (too few samples)")
+    assert set(table[table["variant"] == "mine_ma"]["vrf_check"]) == {"n/a (not fixed-gain)"}
+    ma = table[table["variant"] == "mine_ma"]
+    assert (ma["family"] == "moving average").all() and ma["rmse_x_smooth"].notna().all()
+    variants = pd.read_csv(work / "results/benchmark/variants.csv")
+    assert variants.set_index("variant").loc["mine_ab", "source"] == f"{code}:my_gains"
+    # editing the user's file reruns its cells (and only them); a docstring does not
+    code.write_text(USER_TRACKERS.replace("A moving average", "A running mean"), encoding="utf-8")
+    dry = subprocess.run([*cmd, str(extra), "-n", league], capture_output=True, text=True)
+    assert _scheduled_rules(dry.stdout) == set(), dry.stdout[-2000:]
+    code.write_text(USER_TRACKERS.replace("2.0 - alpha", "2 - alpha"), encoding="utf-8")
+    dry = subprocess.run([*cmd, str(extra), "-n", league], capture_output=True, text=True)
+    assert _scheduled_rules(dry.stdout) == {"benchmark_cell", "benchmark_league"}
+    cells = [ln for ln in dry.stdout.splitlines() if "output: results/benchmark/cells/" in ln]
+    assert len(cells) == 4 and all("/mine_" in c for c in cells), cells
+    # a name that is not there stops the workflow at parse time, naming the variant
+    extra.write_text(
+        f"benchmark:\n  variants:\n    typo: {{callable: '{code}:my_gainz', alpha: 0.4}}\n",
+        encoding="utf-8",
+    )
+    bad = subprocess.run([*cmd, str(extra), "-n", league], capture_output=True, text=True)
+    assert bad.returncode != 0
+    said = bad.stdout + bad.stderr
+    assert "variant 'typo'" in said and "has no function 'my_gainz'" in said

@@ -12,12 +12,16 @@ the noise-versus-lag points of each design family.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from .._checks import AbglibValueError
+from ..gains import Gains
 from . import metrics, variants
+
+if TYPE_CHECKING:  # pandas is imported where it is used: the workflow's parse needs none
+    import pandas as pd
 
 __all__ = [
     "cell_dataset",
@@ -94,6 +98,8 @@ def run_cell(
         As :func:`abglib.metrics.evaluate_cell`. ``init="three_point"`` needs gamma > 0,
         so alpha-beta variants fall back to ``"two_point"``.
     """
+    import pandas as pd
+
     rule, params = variants.variant_rule(spec, variant)
     n = int(np.shape(dataset.t)[0])
     noise = dict(dataset.noise)
@@ -109,12 +115,13 @@ def run_cell(
         for c in dataset.coords
     }
     gains, runner = None, None
-    if rule.kind == "gains":
-        gains = variants.variant_gains(spec, dataset.dt, n, variant)
+    built = variants.variant_build(spec, dataset.dt, n, variant)
+    if isinstance(built, Gains):
+        gains = built
         if init == "three_point" and np.all(np.asarray(gains.gamma) == 0.0):
             init = "two_point"
     else:
-        runner = variants.variant_runner(spec, dataset.dt, n, variant)
+        runner = built
     rows = metrics.evaluate_cell(
         coords,
         dataset.dt,
@@ -181,6 +188,8 @@ def league_table(
     cells: Sequence[pd.DataFrame], threshold: float, rank_by: str = "rmse_x_smooth"
 ) -> pd.DataFrame:
     """Per scenario, the variants ranked by ``rank_by`` (``all`` row; diverged last)."""
+    import pandas as pd
+
     if not cells:
         raise AbglibValueError("league_table needs at least one cell")
     rows = []
@@ -201,6 +210,8 @@ def league_table(
 def tradeoff_table(cells: Sequence[pd.DataFrame], output: str = "x_smooth") -> pd.DataFrame:
     """Noise-versus-lag points: per (scenario, variant), the RMS of the noise part and of
     the lag part of the error (``all`` row; linear, non-diverged trackers only)."""
+    import pandas as pd
+
     rows = []
     for cell in cells:
         rec = cell[cell["coord"] == "all"].iloc[0]
@@ -244,6 +255,8 @@ def tradeoff_sweep(
         position (``all`` row), one row per (scenario, family, value); points where the
         rule cannot realise the value for the scenario's ``dt`` are skipped.
     """
+    import pandas as pd
+
     rows = []
     for label, fam in families.items():
         fam = dict(fam)

@@ -37,7 +37,6 @@ from collections.abc import Callable, Mapping
 
 import numpy as np
 import scipy.linalg
-import scipy.stats
 
 from .._checks import AbglibValueError, check_in_range, check_positive
 from ..analysis import is_stable, pole_radius, vrf
@@ -172,6 +171,8 @@ def fail_threshold(runs: int, n_checks: int, family_alpha: float) -> float:
         raise AbglibValueError(f"runs must be >= 2 for a confidence interval, got {runs!r}")
     a = float(check_in_range("family_alpha", family_alpha, 0.0, 1.0))
     n = max(int(n_checks), 1)
+    import scipy.stats  # lazy: 0.8 s of import the workflow's parse does not need
+
     return float(scipy.stats.t.ppf(1.0 - a / (2.0 * n), runs - 1))
 
 
@@ -209,6 +210,8 @@ def _ci(per_run: np.ndarray, level: float) -> tuple[float, float, float, float]:
     """Mean, standard error and the two-sided Student-t CI of per-run estimates."""
     m = float(np.mean(per_run))
     se = float(np.std(per_run, ddof=1) / math.sqrt(per_run.size))
+    import scipy.stats
+
     q = float(scipy.stats.t.ppf(0.5 + level / 2.0, per_run.size - 1))
     return m, se, m - q * se, m + q * se
 

@@ -39,13 +39,45 @@ registered too, as rules of kind ``"method"`` scored on their one-step predictio
 ``alwagih_m1`` (alpha0), ``alwagih_m2``, ``alwagih_m3`` ([w_start, w_stop, w_n]),
 ``alwagih_m4`` (alpha0, window, [grid_start, grid_stop, grid_n]), ``alwagih_m5``
 ([grid_start, grid_stop, grid_n], [causal=0], [memory=1]).
+
+A user's own tracker
+--------------------
+A variant may name a Python callable of the user's own instead of a rule::
+
+    my_ab:    {callable: "my_trackers.py:my_gains", alpha: 0.4}       # a file
+    my_filt:  {callable: "mypackage.trackers:my_filter", q: 0.1,     # an importable module
+               family: "my filters"}
+
+``callable`` is ``<file>.py:<function>`` (a relative path is taken from the repository,
+``base`` of :func:`resolve_callable`) or ``<module>:<function>`` (importable). Every other
+key except ``label`` and ``family`` (the league's design family; default
+``"user: <function>"``) is passed to the function as a keyword argument. Its signature::
+
+    def my_variant(dt: float, n_samples: int, **params):
+        # return abglib.Gains (or a tuple (alpha, beta[, gamma]), canonical convention:
+        #   scalars = a fixed-gain tracker, arrays (n_samples,) = time-varying gains),
+        #   run by abglib.track and scored like the built-in rules (fixed gains are
+        #   checked against the exact VRF on white noise);
+        # or return a function run(z) -> result, z the measurements (runs, n_samples),
+        #   result an object or mapping with x_pred (runs, n_samples) and, if the
+        #   tracker has them, x_smooth and v_smooth (and a_smooth): the one-step
+        #   prediction of z[:, k] made before it, the estimates after it.
+
+:func:`check_variant` calls it once per scenario when the workflow is parsed (and runs a
+returned tracker on zeros), so a missing module or file, a missing function, an exception
+or a wrong return stops the build with a message naming the variant.
 """
 
 from __future__ import annotations
 
+import importlib
+import importlib.util
 import numbers
+import sys
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -56,7 +88,12 @@ from ..gains import Gains
 __all__ = [
     "RULES",
     "Rule",
+    "callable_file",
+    "check_variant",
+    "describe_variant",
     "register",
+    "resolve_callable",
+    "variant_build",
     "variant_family",
     "variant_gains",
     "variant_rule",
@@ -65,6 +102,9 @@ __all__ = [
 
 #: Keys of a variant entry that are not rule parameters.
 META_KEYS = ("rule", "label")
+
+#: Keys of a user's variant entry (``callable:``) that are not passed to the callable.
+USER_KEYS = ("callable", "label", "family")
 
 
 @dataclass(frozen=True)
@@ -263,6 +303,8 @@ def variant_rule(spec: Mapping, name: str = "variant") -> tuple[Rule, dict]:
         raise AbglibValueError(
             f"variant {name!r} must be a mapping {{rule: ..., <parameters>}}, got {spec!r}"
         )
+    if "callable" in spec:
+        return _user_rule(spec, name)
     rule_name = spec.get("rule")
     if rule_name not in RULES:
         raise AbglibValueError(
@@ -329,6 +371,13 @@ def variant_gains(spec: Mapping, dt: float, n_samples: int | None = None, name: 
         message of the :mod:`abglib.design` function, prefixed with the variant's name).
     """
     rule, params = variant_rule(spec, name)
+    if rule.kind == "user":
+        built = variant_build(spec, dt, n_samples, name)
+        if isinstance(built, Gains):
+            return built
+        raise AbglibValueError(
+            f"variant {name!r}: {spec['callable']} returns a tracker, not gains; use variant_runner"
+        )
     if rule.kind != "gains":
         raise AbglibValueError(
             f"variant {name!r}: rule {rule.name!r} is an estimation method, not a gain design; "
@@ -347,6 +396,10 @@ def variant_gains(spec: Mapping, dt: float, n_samples: int | None = None, name: 
 def variant_runner(spec: Mapping, dt: float, n_samples: int, name: str = "variant"):
     """A callable ``run(z) -> result`` for a variant of kind ``"method"``."""
     rule, params = variant_rule(spec, name)
+    if rule.kind == "user":
+        built = variant_build(spec, dt, n_samples, name)
+        if not isinstance(built, Gains):
+            return built
     if rule.kind != "method":
         raise AbglibValueError(f"variant {name!r}: rule {rule.name!r} is a gain design")
     try:
@@ -359,6 +412,236 @@ def variant_family(spec: Mapping, name: str = "variant") -> str:
     """Design family of a variant (e.g. ``'standard (critically damped) α-β'``)."""
     rule, params = variant_rule(spec, name)
     return rule.family_of(params)
+
+
+def variant_build(spec: Mapping, dt: float, n_samples: int | None = None, name: str = "variant"):
+    """What a variant runs on a scenario: :class:`~abglib.Gains` (run by the engine) or a
+    function ``run(z) -> result`` (an estimation method or a user's own tracker)."""
+    rule, params = variant_rule(spec, name)
+    if rule.kind == "gains":
+        return variant_gains(spec, dt, n_samples, name)
+    if rule.kind == "method":
+        return variant_runner(spec, dt, n_samples, name)
+    return _user_build(spec, dt, n_samples, name)
+
+
+# --------------------------------------------------------------------------- user code
+_LOADED: dict = {}
+
+
+def resolve_callable(spec: Mapping, base=None) -> dict:
+    """``spec`` with a ``callable: <file>.py:<function>`` made absolute (a relative file is
+    taken from ``base``, the repository); other entries are returned unchanged."""
+    target = spec.get("callable") if isinstance(spec, Mapping) else None
+    if not isinstance(target, str) or ":" not in target:
+        return dict(spec) if isinstance(spec, Mapping) else spec
+    where, _, func = target.rpartition(":")
+    if not _is_file_target(where):
+        return dict(spec)
+    path = Path(where).expanduser()
+    if not path.is_absolute() and base is not None:
+        path = Path(base) / path
+    return {**spec, "callable": f"{path.resolve()}:{func}"}
+
+
+def callable_file(spec: Mapping) -> Path | None:
+    """The source file of a user's variant (for its cells' code hash): the file of
+    ``<file>.py:<function>``, or the module's file of ``<module>:<function>`` (found
+    without importing the module itself); None for a built-in rule."""
+    target = spec.get("callable") if isinstance(spec, Mapping) else None
+    if not isinstance(target, str) or ":" not in target:
+        return None
+    where = target.rpartition(":")[0]
+    if _is_file_target(where):
+        return Path(where)
+    try:
+        found = importlib.util.find_spec(where)
+    except (ImportError, ValueError):
+        found = None
+    if found is None or not found.origin or not found.has_location:
+        return None
+    return Path(found.origin)
+
+
+def _is_file_target(where: str) -> bool:
+    return where.endswith(".py") or "/" in where or "\\" in where
+
+
+def _load_callable(target, name: str) -> Callable:
+    if not isinstance(target, str) or ":" not in target:
+        raise AbglibValueError(
+            f"variant {name!r}: callable must be '<module>:<function>' or "
+            f"'<file>.py:<function>', got {target!r}"
+        )
+    where, _, func = target.rpartition(":")
+    if not where or not func.isidentifier():
+        raise AbglibValueError(
+            f"variant {name!r}: callable must be '<module>:<function>' or "
+            f"'<file>.py:<function>', got {target!r}"
+        )
+    if _is_file_target(where):
+        path = Path(where)
+        if not path.is_file():
+            raise AbglibValueError(
+                f"variant {name!r}: callable {target!r}: no such file {str(path)!r} "
+                "(a relative path is taken from the repository)"
+            )
+        key = (str(path.resolve()), path.stat().st_mtime_ns)
+        module = _LOADED.get(key)
+        if module is None:
+            mod_name = f"abglib_user_variant_{abs(hash(key[0])):x}"
+            loader_spec = importlib.util.spec_from_file_location(mod_name, path)
+            module = importlib.util.module_from_spec(loader_spec)
+            try:
+                loader_spec.loader.exec_module(module)
+            except Exception as exc:
+                raise AbglibValueError(
+                    f"variant {name!r}: importing {str(path)!r} failed: "
+                    f"{type(exc).__name__}: {exc}"
+                ) from exc
+            sys.modules.setdefault(mod_name, module)
+            _LOADED[key] = module
+    else:
+        try:
+            module = importlib.import_module(where)
+        except ModuleNotFoundError as exc:
+            raise AbglibValueError(
+                f"variant {name!r}: callable {target!r}: module {where!r} not found ({exc}); "
+                "give an importable module or a file path '<file>.py:<function>'"
+            ) from None
+    fn = getattr(module, func, None)
+    if not callable(fn):
+        known = sorted(
+            k for k, v in vars(module).items() if callable(v) and not k.startswith("_")
+        )
+        raise AbglibValueError(
+            f"variant {name!r}: callable {target!r}: {where!r} has no function {func!r}; "
+            f"it defines: {', '.join(known) or '(no public functions)'}"
+        )
+    return fn
+
+
+def _user_rule(spec: Mapping, name: str) -> tuple[Rule, dict]:
+    target = spec["callable"]
+    if "rule" in spec:
+        raise AbglibValueError(
+            f"variant {name!r}: give either rule: or callable:, not both (got {spec['rule']!r} "
+            f"and {target!r})"
+        )
+    fn = _load_callable(target, name)
+    params = {k: v for k, v in spec.items() if k not in USER_KEYS}
+    rule = Rule(
+        "callable",
+        lambda p, dt, n: fn(dt, n, **p),
+        (),
+        {},
+        _user_family(spec),
+        fixed_gain=None,
+        kind="user",
+        source=str(target),
+    )
+    return rule, params
+
+
+def _user_family(spec: Mapping) -> str:
+    return str(spec.get("family") or f"user: {str(spec['callable']).rpartition(':')[2]}")
+
+
+def describe_variant(spec: Mapping, name: str = "variant") -> dict:
+    """One row of the variants table: ``rule, family, fixed_gain, source, parameters``
+    (a user's variant is described from its entry, without loading its code: ``rule`` is
+    ``callable``, ``source`` the entry's ``callable`` as written in the config)."""
+    if isinstance(spec, Mapping) and "callable" in spec:
+        params = {k: v for k, v in spec.items() if k not in USER_KEYS}
+        rule_name, family, fixed, source = "callable", _user_family(spec), None, spec["callable"]
+    else:
+        rule, params = variant_rule(spec, name)
+        rule_name, family, fixed, source = (
+            rule.name,
+            rule.family_of(params),
+            rule.fixed_gain,
+            rule.source,
+        )
+    return {
+        "variant": name,
+        "rule": rule_name,
+        "family": family,
+        "fixed_gain": fixed,
+        "source": source,
+        "parameters": ", ".join(f"{k}={v}" for k, v in sorted(params.items())),
+    }
+
+
+def _user_build(spec: Mapping, dt: float, n_samples, name: str):
+    rule, params = _user_rule(spec, name)
+    target = spec["callable"]
+    try:
+        out = rule.build(params, float(dt), None if n_samples is None else int(n_samples))
+    except AbglibValueError as exc:
+        raise AbglibValueError(f"variant {name!r} ({target}): {exc}") from None
+    except Exception as exc:
+        raise AbglibValueError(
+            f"variant {name!r}: {target}(dt={dt}, n_samples={n_samples}, "
+            f"{', '.join(f'{k}={v!r}' for k, v in params.items())}) raised "
+            f"{type(exc).__name__}: {exc}"
+        ) from exc
+    if isinstance(out, Gains):
+        return out
+    if isinstance(out, tuple) and len(out) in (2, 3):
+        try:
+            return Gains(*out)
+        except (AbglibValueError, TypeError) as exc:
+            raise AbglibValueError(
+                f"variant {name!r}: {target} returned the tuple {out!r}, which is not "
+                f"(alpha, beta[, gamma]): {exc}"
+            ) from None
+    if callable(out):
+        return _checked_runner(out, name, target)
+    raise AbglibValueError(
+        f"variant {name!r}: {target} must return abglib.Gains, a tuple (alpha, beta[, gamma]) "
+        f"or a function run(z) -> result with x_pred; got {type(out).__name__}"
+    )
+
+
+def _checked_runner(run: Callable, name: str, target: str) -> Callable:
+    def checked(z):
+        try:
+            res = run(z)
+        except Exception as exc:
+            raise AbglibValueError(
+                f"variant {name!r}: the tracker of {target} raised {type(exc).__name__}: {exc}"
+            ) from exc
+        if isinstance(res, Mapping):
+            res = SimpleNamespace(**res)
+        shape = np.shape(z)
+        for out in ("x_pred", "x_smooth", "v_smooth", "a_smooth"):
+            val = getattr(res, out, None)
+            if val is None:
+                if out == "x_pred":
+                    raise AbglibValueError(
+                        f"variant {name!r}: the tracker of {target} must return x_pred "
+                        f"(an object or mapping with x_pred, x_smooth, v_smooth), got "
+                        f"{type(res).__name__}"
+                    )
+                continue
+            if np.shape(val) != shape:
+                raise AbglibValueError(
+                    f"variant {name!r}: the tracker of {target} returned {out} of shape "
+                    f"{np.shape(val)}, expected the measurements' shape {shape}"
+                )
+        return res
+
+    return checked
+
+
+def check_variant(spec: Mapping, dt: float, n_samples: int, name: str = "variant") -> None:
+    """Raise :class:`~abglib.AbglibValueError` if the variant cannot run on a scenario of
+    interval ``dt`` and length ``n_samples``: a bad rule or parameter, a design rule
+    outside its domain, or a user's callable that cannot be loaded, raises, or returns
+    something else than gains or a tracker (a returned tracker is run on zeros)."""
+    built = variant_build(spec, dt, n_samples, name)
+    if variant_rule(spec, name)[0].kind == "user" and not isinstance(built, Gains):
+        built(np.zeros((2, int(n_samples))))
 
 
 # --------------------------------------------------------------------------- seed 001

@@ -34,8 +34,11 @@ __all__ = [
     "Study",
     "claims_of",
     "evaluate",
+    "judge_claims",
     "plausible_ranges",
     "reproduce",
+    "study_of",
+    "study_tables",
 ]
 
 
@@ -50,6 +53,55 @@ def claims_of(doc: str):
         raise AbglibValueError(f"doc must be one of {list(DOCS)}, got {doc!r}")
     mod = importlib.import_module(f"{__name__}.{doc}.claims")
     return mod.CLAIMS, mod.STUDY
+
+
+def study_of(doc: str):
+    """The study class of one document, from ``abglib.replications.<doc>.study`` alone
+    (without its claims, so that the study's job does not depend on their code)."""
+    import importlib
+
+    from .._checks import AbglibValueError
+
+    if doc not in DOCS:
+        raise AbglibValueError(f"doc must be one of {list(DOCS)}, got {doc!r}")
+    mod = importlib.import_module(f"{__name__}.{doc}.study")
+    found = [
+        v
+        for v in vars(mod).values()
+        if isinstance(v, type) and issubclass(v, Study) and v is not Study and v.doc == doc
+    ]
+    if len(found) != 1:
+        raise AbglibValueError(
+            f"{mod.__name__} must define exactly one Study subclass with doc = {doc!r}, "
+            f"found {[c.__name__ for c in found]}"
+        )
+    return found[0]
+
+
+def study_tables(doc: str, config, published_paths) -> dict:
+    """The report tables of one document's study at ``config`` (:meth:`Study.tables`), by
+    file stem: the ``<doc>_study`` job, which reruns when the study's code or config
+    changes, not when a claim's does."""
+    from ..reporting.compare import read_published
+
+    published = read_published(published_paths)
+    return dict(study_of(doc)(config, published).tables())
+
+
+def judge_claims(doc: str, config, published_paths, overrides=None) -> dict:
+    """``{'comparison': ..., 'robustness': ...}`` of one document: every published claim
+    judged (:func:`evaluate`) on a study built at ``config`` and at the points of its
+    plausible ranges. The ``<doc>_claims`` job; it computes only what the claims use (the
+    study's members are lazy)."""
+    from ..reporting.compare import read_published
+
+    claims, study_cls = claims_of(doc)
+    published = read_published(published_paths)
+    study = study_cls(config, published)
+    comparison, robustness = evaluate(
+        doc, claims, published, study, lambda c: study_cls(c, published), overrides
+    )
+    return {"comparison": comparison, "robustness": robustness}
 
 
 def reproduce(doc: str, config, published_paths, overrides=None) -> dict:

@@ -27,6 +27,7 @@ __all__ = [
     "config_errors",
     "curve_label",
     "gains_from_spec",
+    "job_log",
     "log_to",
     "prepend_pythonpath",
     "wt_grid",
@@ -146,6 +147,40 @@ def log_to(path) -> logging.Logger:
     return logger
 
 
+class JobFailed(RuntimeError):
+    """A job run inside Snakemake's own process failed; the message names its log."""
+
+
+@contextlib.contextmanager
+def job_log(path, name: str = "job"):
+    """The log of a job that runs inside Snakemake's process (a ``run:`` block).
+
+    Yields a logger writing to ``path`` (truncated) and nowhere else, so that jobs running
+    side by side in threads keep separate logs and the process's ``sys.stderr`` is left
+    alone (unlike :func:`log_to`, which is for a script's own process). An exception is
+    written to the log with its traceback and raised again as :class:`JobFailed` with its
+    message and the log's path.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    logger = logging.getLogger(f"abglib.job.{path.resolve()}")
+    logger.propagate = False
+    logger.setLevel(logging.INFO)
+    handler = logging.FileHandler(path, mode="w", encoding="utf-8")
+    logger.handlers[:] = [handler]
+    try:
+        yield logger
+    except Exception as exc:
+        logger.error("%s failed", name, exc_info=True)
+        raise JobFailed(
+            f"{name}: {type(exc).__name__}: {exc}\n(full traceback in {path})"
+        ) from None
+    finally:
+        handler.close()
+        logger.handlers.clear()
+        logging.Logger.manager.loggerDict.pop(logger.name, None)
+
+
 def prepend_pythonpath(path) -> None:
     """Put ``path`` first on ``PYTHONPATH`` for subprocesses (the workflow's jobs).
 
@@ -154,6 +189,17 @@ def prepend_pythonpath(path) -> None:
     """
     parts = [str(path)] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
     os.environ["PYTHONPATH"] = os.pathsep.join(dict.fromkeys(parts))
+
+
+def _read_umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+# read once, when the module is imported: os.umask can only be read by setting it, which
+# would race with other threads creating files (jobs run in threads of Snakemake's process)
+_UMASK = _read_umask()
 
 
 @contextlib.contextmanager
@@ -170,29 +216,8 @@ def atomic_output(path):
     os.close(fd)
     try:
         yield Path(tmp)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
+        os.chmod(tmp, 0o666 & ~_UMASK)
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
-
-
-def library_hash(package_dir) -> str:
-    """SHA-256 of the abglib sources (every ``*.py`` below ``package_dir``, by relative path
-    and content): a rule parameter, so that Snakemake reruns a rule when the library it
-    calls changes, not only when its own script does."""
-    import hashlib
-
-    root = Path(package_dir)
-    files = sorted(root.rglob("*.py"))
-    if not files:
-        raise AbglibValueError(f"no Python sources below {root}: cannot hash the library")
-    h = hashlib.sha256()
-    for f in files:
-        h.update(f.relative_to(root).as_posix().encode())
-        h.update(b"\0")
-        h.update(f.read_bytes())
-        h.update(b"\0")
-    return h.hexdigest()

@@ -7,6 +7,10 @@
 # The matrix's settings, checks and input functions are in common.smk.
 
 
+# one job per cell, run inside Snakemake's own process (run:; the default profile sets
+# force-use-threads), so the cells share one Python start-up, one import of abglib and
+# one numba load; on a cluster each is a job of its own. abglib.bench.cell.cell_job
+# writes the CSV atomically after the VRF build check and logs to the cell's log.
 rule benchmark_cell:
     input:
         parquet="results/datasets/{scenario}.parquet",
@@ -20,28 +24,44 @@ rule benchmark_cell:
     wildcard_constraints:
         variant="|".join(map(re.escape, BENCH_VARIANTS)) or "no-variants-configured",
         scenario="|".join(map(re.escape, BENCH_SCENARIOS)) or "no-scenarios-configured",
-    conda:
-        "../envs/abglib.yaml"
     threads: 1
     resources:
         mem_mb=bench_mem_mb,
         runtime=30,
     params:
-        library=LIBRARY_HASH,
-        spec=lambda wildcards: BENCH_VARIANTS[wildcards.variant],
+        code=bench_cell_code,
+        spec=lambda wildcards: BENCH_SPECS[wildcards.variant],
         scenario_spec=lambda wildcards: DATASET_SCENARIOS[wildcards.scenario],
-        runs=BENCH.get("runs"),
         seed=lambda wildcards: int(BENCH["seed"])
         + int(DATASET_SCENARIOS[wildcards.scenario]["seed"]),
-        burn_in=BENCH.get("burn_in"),
-        init=BENCH.get("init"),
-        ci_level=BENCH.get("ci_level"),
-        chunk_runs=BENCH.get("chunk_runs"),
-        family_alpha=BENCH.get("family_alpha"),
-        family_size=BENCH.get("family_size"),
+        settings={
+            k: BENCH.get(k)
+            for k in (
+                "runs",
+                "burn_in",
+                "init",
+                "ci_level",
+                "chunk_runs",
+                "family_alpha",
+                "family_size",
+            )
+        },
         digits=config["significant_digits"],
-    script:
-        "../scripts/benchmark_cell.py"
+    run:
+        from abglib.bench.cell import cell_job
+
+        cell_job(
+            input.parquet,
+            output.cell,
+            log[0],
+            variant=wildcards.variant,
+            spec=params.spec,
+            scenario=wildcards.scenario,
+            scenario_spec=params.scenario_spec,
+            settings=params.settings,
+            seed=params.seed,
+            digits=params.digits,
+        )
 
 
 rule benchmark_league:
@@ -65,7 +85,7 @@ rule benchmark_league:
         mem_mb=1000,
         runtime=10,
     params:
-        library=LIBRARY_HASH,
+        code=code_of("benchmark_league.py"),
         variants=BENCH_VARIANTS,
         family_alpha=BENCH.get("family_alpha"),
         family_size=BENCH.get("family_size"),
@@ -91,7 +111,7 @@ rule benchmark_tradeoff:
         mem_mb=2000,
         runtime=20,
     params:
-        library=LIBRARY_HASH,
+        code=code_of("benchmark_tradeoff.py"),
         families=BENCH.get("tradeoff_families"),
         burn_in=BENCH.get("burn_in"),
         init=BENCH.get("init"),
@@ -125,7 +145,7 @@ rule benchmark_figures:
         mem_mb=1000,
         runtime=10,
     params:
-        library=LIBRARY_HASH,
+        code=code_of("benchmark_figures.py"),
         dpi=config["figure_dpi"],
         rank_by=BENCH.get("rank_by"),
         tradeoff_scenarios=BENCH.get("tradeoff_scenarios"),
@@ -149,7 +169,7 @@ rule benchmark_peers:
         mem_mb=1000,
         runtime=10,
     params:
-        library=LIBRARY_HASH,
+        code=code_of("benchmark_peers.py"),
         rtol=BENCH.get("peers", {}).get("rtol"),
         seed=BENCH.get("peers", {}).get("seed"),
         digits=config["significant_digits"],
@@ -172,7 +192,7 @@ rule benchmark_speed:
         mem_mb=2000,
         runtime=10,
     params:
-        library=LIBRARY_HASH,
+        code=code_of("benchmark_speed.py"),
         repeats=BENCH.get("speed", {}).get("repeats", 1),
         run=BENCH.get("speed", {}).get("run", False),
     script:
@@ -220,7 +240,7 @@ rule benchmark_report:
         mem_mb=2000,
         runtime=20,
     params:
-        library=LIBRARY_HASH,
+        code=code_of("render_report.py", NOTEBOOKS / "benchmark.py"),
         doc="benchmark",
         version=VERSION,
         repo=lambda wildcards, input: REPO,

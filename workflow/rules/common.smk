@@ -5,7 +5,8 @@ import sys
 from pathlib import Path
 
 import abglib
-from abglib.reporting.pipeline import config_errors, library_hash, prepend_pythonpath
+from abglib.reporting.codehash import code_hash
+from abglib.reporting.pipeline import config_errors, prepend_pythonpath
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
@@ -46,9 +47,36 @@ REPO = workflow.basedir
 PUBLISHED = Path(workflow.basedir) / "data" / "published"
 NOTEBOOKS = Path(workflow.basedir) / "workflow" / "notebooks"
 
-# content hash of the abglib sources: a param of every computing rule, so that a change to
-# the library (not only to a rule's own script) reruns what it computed
-LIBRARY_HASH = library_hash(Path(workflow.basedir) / "abglib")
+# each rule depends on the library code it runs; its param `code` is the hash of the abglib
+# modules its script (or its run: block's module) imports, transitively, read statically
+# and without docstrings or comments (abglib.reporting.codehash.code_hash). Editing a
+# docstring reruns nothing; editing a module reruns only the rules that import it.
+ABGLIB_DIR = Path(workflow.basedir) / "abglib"
+SCRIPTS_DIR = Path(workflow.basedir) / "workflow" / "scripts"
+_CODE_HASHES = {}
+# parsed files by path, size and mtime: a no-op build parses no source (a cache only)
+CODE_CACHE = Path(".snakemake") / "abglib-code-cache.json"
+
+
+def code_of(*sources, extra=()):
+    """Code hash of a rule: ``sources`` are script names of workflow/scripts, other Python
+    files (a notebook) or abglib module names; ``extra`` files are hashed as they are.
+    """
+    key = (tuple(map(str, sources)), tuple(map(str, extra)))
+    if key not in _CODE_HASHES:
+        paths = [
+            (
+                str(SCRIPTS_DIR / s)
+                if isinstance(s, str) and s.endswith(".py") and "/" not in s
+                else str(s)
+            )
+            for s in sources
+        ]
+        _CODE_HASHES[key] = code_hash(
+            *paths, package_dir=ABGLIB_DIR, extra=extra, cache=CODE_CACHE
+        )
+    return _CODE_HASHES[key]
+
 
 # per document: figure stems and table stems a report shows and copies beside itself
 REPORT_CONTENT = {
@@ -191,43 +219,52 @@ def doc_config(doc, *extra):
     return {k: config[k] for k in (doc, *extra) if k in config}
 
 
-def reproduce_outputs(doc, tables):
-    """Named outputs of a ``<doc>_reproduce`` rule: every study table, the comparison and
-    the robustness sweep, under ``results/<doc>/``."""
-    return {t: f"results/{doc}/{t}.csv" for t in [*tables, "comparison", "robustness"]}
+def claims_outputs(doc):
+    """Named outputs of a ``<doc>_claims`` rule: the comparison and the robustness sweep."""
+    return {t: f"results/{doc}/{t}.csv" for t in ("comparison", "robustness")}
 
 
 # ---------------------------------------------------------------- benchmark matrix
 # (benchmark.smk): the variants and scenarios of config['benchmark'], checked at parse
 # time, and the input functions of its rules.
 from abglib.bench.benchmark import n_vrf_checks
-from abglib.bench.variants import variant_gains, variant_rule
+from abglib.bench.variants import callable_file, check_variant, resolve_callable
 
 BENCH = config.get("benchmark", {})
+# a user's variant (callable: <file>.py:<function>) names its file from the repository;
+# its cells get the resolved path (the league's variants table shows it as written)
 BENCH_VARIANTS = BENCH.get("variants", {})
+BENCH_SPECS = {n: resolve_callable(s, REPO) for n, s in BENCH_VARIANTS.items()}
 BENCH_SCENARIOS = list(BENCH.get("scenarios", []))
 
 
 def _check_benchmark():
-    """Fail at parse time on an unknown scenario, rule or parameter, or on a variant no
-    scenario can realise (each message names the variant)."""
+    """Fail at parse time on an unknown scenario, rule or parameter, on a variant no
+    scenario can realise, or on a user's callable that cannot be loaded, raises or returns
+    neither gains nor a tracker on any scenario (each message names the variant)."""
     for s in BENCH_SCENARIOS:
         dataset_files(s)
-    for name, spec in BENCH_VARIANTS.items():
-        variant_rule(spec, name)
+    for name, spec in BENCH_SPECS.items():
         errors = []
         for s in BENCH_SCENARIOS:
             sc = DATASET_SCENARIOS[s]
             try:
-                if variant_rule(spec, name)[0].kind == "gains":
-                    variant_gains(spec, float(sc["dt"]), int(sc["n_samples"]), name)
+                check_variant(spec, float(sc["dt"]), int(sc["n_samples"]), name)
             except ValueError as exc:
+                if "callable" in spec:
+                    raise WorkflowError(f"benchmark variant {name!r}: {exc}") from None
                 errors.append(f"{s}: {exc}")
         if BENCH_SCENARIOS and len(errors) == len(BENCH_SCENARIOS):
             raise WorkflowError(
                 f"benchmark variant {name!r} is infeasible on every scenario:\n  "
                 + "\n  ".join(errors)
             )
+
+
+def bench_cell_code(wildcards):
+    """Code hash of a cell: abglib.bench.cell's imports, and a user's variant's file."""
+    f = callable_file(BENCH_SPECS[wildcards.variant])
+    return code_of("abglib.bench.cell", extra=[f] if f else [])
 
 
 if BENCH:

@@ -14,7 +14,7 @@ rule scorecard:
     conda:
         "../envs/abglib.yaml"
     params:
-        library=LIBRARY_HASH,
+        code=code_of("scorecard.py"),
         digits=config["significant_digits"],
     script:
         "../scripts/scorecard.py"

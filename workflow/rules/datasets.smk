@@ -14,7 +14,7 @@ rule dataset:
     wildcard_constraints:
         scenario="|".join(DATASET_SCENARIOS) or "no-scenarios-configured",
     params:
-        library=LIBRARY_HASH,
+        code=code_of("abglib.bench.datasets"),
         spec=lambda wildcards: DATASET_SCENARIOS[wildcards.scenario],
     run:
         from abglib.bench.datasets import build

@@ -29,7 +29,7 @@ rule report_index:
     conda:
         "../envs/abglib.yaml"
     params:
-        library=LIBRARY_HASH,
+        code=code_of("render_index.py"),
         docs=DOCS,
         titles=DOC_TITLES,
         extras=EXTRA_REPORTS,

@@ -19,7 +19,7 @@ rule steelman_frequency_response:
     conda:
         "../envs/abglib.yaml"
     params:
-        library=LIBRARY_HASH,
+        code=code_of("frequency_response.py"),
         figure=lambda wildcards: S78["figures"][wildcards.fig],
         grids=S78["grids"],
         digits=config["significant_digits"],
@@ -44,7 +44,7 @@ rule steelman_figure:
     conda:
         "../envs/abglib.yaml"
     params:
-        library=LIBRARY_HASH,
+        code=code_of("plot_frequency_response.py"),
         axes=lambda wildcards: S78["figures"][wildcards.fig]["axes"],
         caption=lambda wildcards: S78["figures"][wildcards.fig]["caption"],
         dpi=config["figure_dpi"],
@@ -63,20 +63,45 @@ STEELMAN1978_TABLES = [
 ]
 
 
-rule steelman1978_reproduce:
+# the study's tables; its code hash covers abglib.replications.steelman1978.study and what it
+# imports, not the claims, so editing a claim reruns only steelman1978_claims
+rule steelman1978_study:
     input:
         published=published_tables_of("steelman1978"),
     output:
-        **reproduce_outputs("steelman1978", STEELMAN1978_TABLES),
+        **{t: f"results/steelman1978/{t}.csv" for t in STEELMAN1978_TABLES},
     log:
-        "logs/steelman1978/reproduce.log",
+        "logs/steelman1978/study.log",
     benchmark:
-        "benchmarks/results/steelman1978/reproduce.tsv"
+        "benchmarks/results/steelman1978/study.tsv"
     conda:
         "../envs/abglib.yaml"
     params:
-        library=LIBRARY_HASH,
+        code=code_of("reproduce.py", "abglib.replications.steelman1978.study"),
         doc="steelman1978",
+        part="study",
+        cfg=doc_config("steelman1978"),
+        digits=config["significant_digits"],
+    script:
+        "../scripts/reproduce.py"
+
+
+# every published claim judged, and its robustness over the plausible ranges
+rule steelman1978_claims:
+    input:
+        published=published_tables_of("steelman1978"),
+    output:
+        **claims_outputs("steelman1978"),
+    log:
+        "logs/steelman1978/claims.log",
+    benchmark:
+        "benchmarks/results/steelman1978/claims.tsv"
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        code=code_of("reproduce.py", "abglib.replications.steelman1978.claims"),
+        doc="steelman1978",
+        part="claims",
         cfg=doc_config("steelman1978"),
         overrides=config["tolerance_overrides"].get("steelman1978", {}),
         digits=config["significant_digits"],
@@ -106,7 +131,7 @@ rule steelman_report:
     conda:
         "../envs/abglib.yaml"
     params:
-        library=LIBRARY_HASH,
+        code=code_of("render_report.py", NOTEBOOKS / "steelman1978.py"),
         doc="steelman1978",
         version=VERSION,
         repo=lambda wildcards, input: REPO,

@@ -7,22 +7,9 @@ from abglib.reporting.pipeline import log_to
 
 def variants_table(specs) -> pd.DataFrame:
     """One row per configured variant: rule, family, source, parameters as given."""
-    from abglib.bench.variants import variant_rule
+    from abglib.bench.variants import describe_variant
 
-    rows = []
-    for name, spec in specs.items():
-        rule, params = variant_rule(spec, name)
-        rows.append(
-            {
-                "variant": name,
-                "rule": rule.name,
-                "family": rule.family_of(params),
-                "fixed_gain": rule.fixed_gain,
-                "source": rule.source,
-                "parameters": ", ".join(f"{k}={v}" for k, v in sorted(params.items())),
-            }
-        )
-    return pd.DataFrame(rows)
+    return pd.DataFrame([describe_variant(spec, name) for name, spec in specs.items()])
 
 
 def main(input, output, params) -> None:

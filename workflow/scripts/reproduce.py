@@ -1,20 +1,26 @@
-"""Reproduce one source document (abglib.replications.reproduce): write its study's tables,
-``comparison.csv`` (CONTRACTS.md §3) and ``robustness.csv``, one per named output."""
+"""One part of a source document's replication, one table per named output:
+``part='study'`` writes the study's tables (abglib.replications.study_tables),
+``part='claims'`` writes ``comparison.csv`` (CONTRACTS.md §3) and ``robustness.csv``
+(abglib.replications.judge_claims)."""
 
 from abglib.reporting.pipeline import log_to
 
 
 def main(input, output, params) -> None:
     from abglib import AbglibValueError
-    from abglib.replications import reproduce
+    from abglib.replications import judge_claims, study_tables
     from abglib.reporting.compare import write_csv
 
-    tables = reproduce(params.doc, params.cfg, list(input.published), params.overrides)
+    published = list(input.published)
+    if params.part == "study":
+        tables = study_tables(params.doc, params.cfg, published)
+    else:
+        tables = judge_claims(params.doc, params.cfg, published, params.overrides)
     names = list(output.keys())
     if set(names) != set(tables):
         raise AbglibValueError(
-            f"{params.doc}: the rule's outputs {sorted(names)} must be the study's tables "
-            f"{sorted(tables)}"
+            f"{params.doc} {params.part}: the rule's outputs {sorted(names)} must be the "
+            f"tables {sorted(tables)}"
         )
     for name in names:
         write_csv(tables[name], output[name], params.digits)

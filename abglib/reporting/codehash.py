@@ -1,0 +1,213 @@
+"""Per-rule code hashes: a workflow rule depends on the abglib code it runs.
+
+:func:`code_hash` is a rule parameter (``code``, ``workflow/rules/common.smk``): the hash
+of the abglib modules a rule's script, notebook or ``run:`` module imports, followed
+transitively and read statically (no code runs), each as its syntax tree without
+docstrings or comments. Snakemake reruns a rule when that hash changes, so editing a
+docstring or a comment reruns nothing, and editing a module reruns only the rules that
+import it. No job imports this module, so changing it reruns nothing either.
+"""
+
+from __future__ import annotations
+
+import functools
+from pathlib import Path
+
+from .._checks import AbglibValueError
+
+__all__ = ["code_fingerprint", "code_hash", "module_closure"]
+
+
+def code_fingerprint(path) -> str:
+    """SHA-256 of one Python file's code: its syntax tree without docstrings.
+
+    Comments, blank lines, line numbers and docstrings (of the module, its classes and
+    functions) do not enter it, so editing them changes nothing; any other edit does.
+    The tree's text form is Python's (``ast.dump``), so a new Python version may change
+    every fingerprint once.
+    """
+    return _parsed(Path(path))[0]
+
+
+#: On-disk cache of fingerprints and imports (see :func:`code_hash`'s ``cache``).
+_DISK: dict = {"path": None, "entries": {}, "dirty": False}
+
+
+def _parsed(path: Path) -> tuple[str, list]:
+    """(fingerprint, imports) of a file, cached while its size and mtime stay; an import
+    is ``(level, module or '', names)`` (level 0 and names ``()`` for ``import x``)."""
+    try:
+        st = path.stat()
+    except OSError as exc:
+        raise AbglibValueError(f"cannot read Python source {path}: {exc}") from None
+    key = f"{path.resolve()}|{st.st_mtime_ns}|{st.st_size}"
+    hit = _DISK["entries"].get(key)
+    if hit is None:
+        hit = _parse_cached(str(path.resolve()), st.st_mtime_ns, st.st_size)
+        if _DISK["path"] is not None:
+            _DISK["entries"][key] = hit
+            _DISK["dirty"] = True
+    return hit
+
+
+@functools.lru_cache(maxsize=4096)
+def _parse_cached(path: str, mtime_ns: int, size: int) -> tuple[str, list]:
+    import ast
+    import hashlib
+
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+        tree = ast.parse(text, filename=path)
+    except (OSError, SyntaxError, ValueError) as exc:
+        raise AbglibValueError(f"cannot read Python source {path}: {exc}") from None
+    imports = []
+    for n in ast.walk(tree):
+        if isinstance(n, ast.Import):
+            imports.extend([0, a.name, []] for a in n.names)
+        elif isinstance(n, ast.ImportFrom):
+            imports.append([n.level, n.module or "", [a.name for a in n.names]])
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        if (
+            isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef))
+            and body
+            and isinstance(body[0], ast.Expr)
+            and isinstance(body[0].value, ast.Constant)
+            and isinstance(body[0].value.value, str)
+        ):
+            node.body = body[1:] or [ast.Pass()]
+    digest = hashlib.sha256(ast.dump(tree, include_attributes=False).encode()).hexdigest()
+    return digest, imports
+
+
+def _use_disk_cache(cache) -> None:
+    import json
+
+    cache = None if cache is None else str(cache)
+    if cache == _DISK["path"]:
+        return
+    _DISK.update(path=cache, entries={}, dirty=False)
+    if cache is not None:
+        try:
+            _DISK["entries"] = json.loads(Path(cache).read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            pass
+
+
+def _save_disk_cache() -> None:
+    import json
+
+    if _DISK["path"] is None or not _DISK["dirty"]:
+        return
+    try:
+        from .pipeline import atomic_output
+
+        with atomic_output(_DISK["path"]) as tmp:
+            tmp.write_text(json.dumps(_DISK["entries"]), encoding="utf-8")
+        _DISK["dirty"] = False
+    except OSError:
+        pass  # a cache: never worth failing a build for
+
+
+def _module_file(package_dir: Path, name: str) -> Path | None:
+    """The file of module ``name`` (dotted, starting with the package's name), or None."""
+    parts = name.split(".")
+    if parts[0] != package_dir.name:
+        return None
+    base = package_dir.joinpath(*parts[1:])
+    for f in (base / "__init__.py", base.with_suffix(".py")):
+        if f.is_file():
+            return f
+    return None
+
+
+def _imports(path: Path, module: str | None, package: str) -> set[str]:
+    """Dotted names of every module of ``package`` that ``path`` imports, anywhere in it
+    (lazy imports inside functions included), with ``from X import y`` counted both as X
+    and as X.y (y may be a submodule)."""
+    is_pkg = path.name == "__init__.py"
+    names: set[str] = set()
+    for level, mod, imported in _parsed(path)[1]:
+        if not imported:  # import x.y
+            names.add(mod)
+            continue
+        if level:
+            if module is None:
+                continue  # a relative import outside the package: not ours
+            parts = module.split(".")
+            keep = len(parts) - level + (1 if is_pkg else 0)
+            base = ".".join(parts[:keep] + ([mod] if mod else []))
+        else:
+            base = mod
+        names.add(base)
+        names.update(f"{base}.{a}" for a in imported if a != "*")
+    out = set()
+    for n in names:
+        if n == package or n.startswith(package + "."):
+            parts = n.split(".")
+            # importing a.b.c runs a/__init__, a/b/__init__ too
+            out.update(".".join(parts[:i]) for i in range(1, len(parts) + 1))
+    return out
+
+
+def module_closure(sources, package_dir) -> list[Path]:
+    """Every file of the package at ``package_dir`` that ``sources`` import, transitively.
+
+    ``sources`` are dotted module names of the package (``'abglib.bench.benchmark'``) or
+    paths of Python files anywhere (a workflow script, a notebook in jupytext form, a
+    user's own module); the imports are read from the source (statically, no code runs),
+    every parent package's ``__init__`` included. Returns the package's files, sorted.
+    """
+    root = Path(package_dir).resolve()
+    package = root.name
+    seen: dict[str, Path] = {}
+    todo: list[tuple[str | None, Path]] = []
+    for src in sources:
+        f = _module_file(root, str(src)) if isinstance(src, str) and "/" not in src else None
+        if f is not None:
+            todo.append((str(src), f))
+        elif Path(src).is_file():
+            todo.append((None, Path(src)))
+        else:
+            raise AbglibValueError(
+                f"code source {src!r} is neither a module of {package} nor a file"
+            )
+    while todo:
+        name, path = todo.pop()
+        deps = _imports(path, name, package)
+        if name is not None:
+            if name in seen:
+                continue
+            seen[name] = path
+            # importing a.b.c runs a/__init__ and a/b/__init__ first
+            parts = name.split(".")
+            deps |= {".".join(parts[:i]) for i in range(1, len(parts))}
+        for dep in deps:
+            f = _module_file(root, dep)
+            if f is not None and dep not in seen:
+                todo.append((dep, f))
+    return sorted(set(seen.values()))
+
+
+def code_hash(*sources, package_dir, extra=(), cache=None) -> str:
+    """SHA-256 of the code a job runs: the package files ``sources`` import
+    (:func:`module_closure`) and the ``extra`` files (e.g. a user's own variant module),
+    each by :func:`code_fingerprint`.
+
+    A rule parameter: Snakemake reruns the rule when the library code it uses changes,
+    and only then; an edit to a docstring or a comment, or to a module it does not
+    import, reruns nothing. ``cache``: a JSON file keeping each file's fingerprint and
+    imports by path, size and mtime, so that a no-op build parses nothing (a missing or
+    unreadable cache is rebuilt; the hash never depends on it).
+    """
+    import hashlib
+
+    _use_disk_cache(cache)
+    root = Path(package_dir).resolve()
+    h = hashlib.sha256()
+    for f in module_closure(sources, root):
+        h.update(f"{f.relative_to(root.parent).as_posix()}\0{code_fingerprint(f)}\0".encode())
+    for f in extra:
+        h.update(f"extra\0{code_fingerprint(f)}\0".encode())
+    _save_disk_cache()
+    return h.hexdigest()
