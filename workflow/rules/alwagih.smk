@@ -106,6 +106,7 @@ rule alwagih_report:
         tables=report_tables("alwagih"),
     output:
         html=f"{REPORTS}/alwagih/index.html",
+        notebook=f"{REPORTS}/alwagih/notebook.py",
         figures=expand(
             f"{REPORTS}/alwagih/figures/{{f}}.png",
             f=REPORT_CONTENT["alwagih"]["figures"],
@@ -126,5 +127,6 @@ rule alwagih_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
+        page=lambda wildcards, input: report_page("alwagih", input),
     script:
         "../scripts/render_report.py"

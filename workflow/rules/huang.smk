@@ -76,6 +76,7 @@ rule huang_report:
         tables=report_tables("huang"),
     output:
         html=f"{REPORTS}/huang/index.html",
+        notebook=f"{REPORTS}/huang/notebook.py",
         figures=expand(
             f"{REPORTS}/huang/figures/{{f}}.png",
             f=REPORT_CONTENT["huang"]["figures"],
@@ -96,5 +97,6 @@ rule huang_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
+        page=lambda wildcards, input: report_page("huang", input),
     script:
         "../scripts/render_report.py"
