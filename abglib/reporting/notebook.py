@@ -152,7 +152,11 @@ class Report:
 
     # -- showing ------------------------------------------------------------------------
     def table_markup(
-        self, df: pd.DataFrame, caption: str | None = None, source: str | None = None
+        self,
+        df: pd.DataFrame,
+        caption: str | None = None,
+        source: str | None = None,
+        group_by: tuple = (),
     ) -> str:
         """The HTML of a numbered table (the next number)."""
         self.n_tables += 1
@@ -163,15 +167,21 @@ class Report:
             number=self.n_tables,
             source=self._table_source(key),
             attrs={"id": f"tab-{self.n_tables}"},
+            group_by=group_by,
         )
 
     def table(
-        self, df: pd.DataFrame, caption: str | None = None, source: str | None = None
+        self,
+        df: pd.DataFrame,
+        caption: str | None = None,
+        source: str | None = None,
+        group_by: tuple = (),
     ) -> None:
-        """Display ``df`` as a numbered table with ``caption`` and its source."""
+        """Display ``df`` as a numbered table with ``caption`` and its source; ``group_by``
+        collapses runs of rows sharing those columns' values (see ``table_html``)."""
         from IPython.display import HTML, display
 
-        display(HTML(self.table_markup(df, caption, source)))
+        display(HTML(self.table_markup(df, caption, source, group_by)))
 
     def figure(self, key: str, caption: str = "", alt: str | None = None) -> None:
         """Display ``figures/<key>.png`` as a numbered figure.

@@ -82,7 +82,10 @@ def _flat(df: pd.DataFrame) -> pd.DataFrame:
     if isinstance(df.columns, pd.MultiIndex):
         df = df.copy()
         df.columns = [" / ".join(str(c) for c in col if str(c)) for col in df.columns]
-    plain = isinstance(df.index, pd.RangeIndex) and df.index.name is None
+    # an unnamed integer index is a row counter (also after filtering): not shown
+    plain = (
+        df.index.nlevels == 1 and df.index.name is None and pd.api.types.is_integer_dtype(df.index)
+    )
     if plain:
         return df.reset_index(drop=True)
     out = df.copy()
@@ -115,6 +118,7 @@ def table_html(
     source: str | None = None,
     group_min: int = GROUP_MIN,
     attrs: Mapping[str, str] | None = None,
+    group_by: Sequence[str] = (),
 ) -> str:
     """``df`` as a ``figure.abg-table``: caption, optional provenance line, scrolling table.
 
@@ -134,6 +138,9 @@ def table_html(
         are collapsed into one ``tr.group``; 0 disables grouping.
     attrs : mapping, optional
         Extra attributes of the ``figure`` element (e.g. ``{"id": "tab-3"}``).
+    group_by : sequence of str
+        Group runs of consecutive rows with the same values in these columns instead
+        (for tables without verdicts, e.g. one group per equation).
     """
     flat = _flat(df)
     columns = [str(c) for c in flat.columns]
@@ -145,8 +152,14 @@ def table_html(
     text = cell_strings(flat)
     idx = {c: i for i, c in enumerate(columns)}
     keys: list = [None] * len(text)
-    if "verdict" in idx and "note" in idx and group_min:
-        keys = [(r[idx["verdict"]], r[idx["note"]]) if r[idx["note"]] else None for r in text]
+    shared = tuple(group_by) if group_by else ("verdict", "note")
+    missing = [c for c in shared if c not in idx]
+    if group_by and missing:
+        raise KeyError(f"group_by columns {missing} are not columns of the table {columns}")
+    if not missing and group_min:
+        keys = [tuple(r[idx[c]] for c in shared) for r in text]
+        if not group_by:  # a run of empty notes says nothing: not grouped
+            keys = [k if k[1] else None for k in keys]
 
     def data_attrs(rows: Sequence[Sequence[str]]) -> str:
         out = []
@@ -168,13 +181,19 @@ def table_html(
     while i < len(text):
         if i in runs:
             stop = runs[i]
-            verdict, note = keys[i]
-            inner_cols = [c for c in columns if c not in ("verdict", "note")]
-            inner = "".join(row(r, frozenset({"verdict", "note"})) for r in text[i:stop])
-            summary = (
-                f'{stop - i} rows, all <span class="v v-{html.escape(verdict)}">'
-                f"{html.escape(verdict)}</span> with the note: {html.escape(note)}"
-            )
+            inner_cols = [c for c in columns if c not in shared]
+            inner = "".join(row(r, frozenset(shared)) for r in text[i:stop])
+            if group_by:
+                what = ", ".join(
+                    f"{c} = {html.escape(v)}" for c, v in zip(shared, keys[i], strict=True)
+                )
+                summary = f"{stop - i} rows with {what}"
+            else:
+                verdict, note = keys[i]
+                summary = (
+                    f'{stop - i} rows, all <span class="v v-{html.escape(verdict)}">'
+                    f"{html.escape(verdict)}</span> with the note: {html.escape(note)}"
+                )
             body.append(
                 f'<tr class="group"{data_attrs(text[i:stop])}><td colspan="{len(columns)}">'
                 f"<details><summary>{summary}</summary>"

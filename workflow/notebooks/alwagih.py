@@ -61,33 +61,38 @@ tables = {
     )
 }
 provenance = None
+made_by = {}
+notebook = "workflow/notebooks/alwagih.py"
 
 # %%
 import pandas as pd
-from IPython.display import Image, Markdown, display
+from IPython.display import Markdown, display
+
+from abglib.reporting.notebook import Report
+
+R = Report(doc, figures, tables, made_by, notebook)
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 4)
 pd.set_option("display.max_columns", 40)
 pd.set_option("display.max_rows", 400)
-comparison = pd.read_csv(
-    tables["comparison"],
+comparison = R.read("comparison",
     dtype={"published": str, "depends_on": str, "robust": str},
     keep_default_na=False,
 )
-t1 = pd.read_csv(tables["table1"])
-t2 = pd.read_csv(tables["table2"])
-mc = pd.read_csv(tables["mc_rmse"])
-t34 = pd.read_csv(tables["tables34"])
-tt = pd.read_csv(tables["ttests"])
-t56 = pd.read_csv(tables["tables56"])
-cons = pd.read_csv(tables["consistency"])
-causal = pd.read_csv(tables["causal"])
-sens = pd.read_csv(tables["sensitivity"])
-bank = pd.read_csv(tables["m5_bank"])
-experiments = pd.read_csv(tables["experiments"])
-settings = pd.read_csv(tables["settings"]).set_index("name")["value"]
-robustness = pd.read_csv(tables["robustness"], dtype=str, keep_default_na=False)
+t1 = R.read("table1")
+t2 = R.read("table2")
+mc = R.read("mc_rmse")
+t34 = R.read("tables34")
+tt = R.read("ttests")
+t56 = R.read("tables56")
+cons = R.read("consistency")
+causal = R.read("causal")
+sens = R.read("sensitivity")
+bank = R.read("m5_bank")
+experiments = R.read("experiments")
+settings = R.read("settings").set_index("name")["value"]
+robustness = R.read("robustness", dtype=str, keep_default_na=False)
 PAPER = ["M1", "M2", "M3", "M4", "M5"]
 counts = comparison["verdict"].value_counts()
 
@@ -121,6 +126,15 @@ def mc_means(noise):
     d = mc[mc["noise"] == noise]
     return d.pivot_table(index=["experiment", "coord"], columns="method", values="mean")
 
+
+# %%
+R.abstract(
+    """The trajectories of Al-Wagih and Abdulla are not published, so the absolute RMSEs of
+Tables 1–2 cannot be reproduced; rankings, signs and t-tests are judged twice, on the printed
+tables and on a reconstruction. The printed tables contradict the paper (Tables 3–6 are
+arithmetic on Tables 1–2, yet many entries fall outside what rounding allows), and the
+conclusion "M5, then M4, then M3" holds in X but not in Y."""
+)
 
 # %% [markdown]
 # ## Reading guide
@@ -278,12 +292,12 @@ display(
 )
 
 # %%
-display(Image(filename=figures["fig5_tracks"]))
-display(Image(filename=figures["fig6_tracks"]))
+R.figure("fig5_tracks", 'Al-Wagih Figure 5 recomputed on the reconstructed trajectory (X): the track and the estimates of the five methods.')
+R.figure("fig6_tracks", 'Al-Wagih Figure 6 recomputed (Y): the track and the estimates of the five methods.')
 
 # %%
-display(Image(filename=figures["fig7_rmse"]))
-display(Image(filename=figures["fig8_rmse"]))
+R.figure("fig7_rmse", 'Al-Wagih Figure 7 recomputed: RMSE of each method over the Monte Carlo runs (X).')
+R.figure("fig8_rmse", 'Al-Wagih Figure 8 recomputed: RMSE of each method over the Monte Carlo runs (Y).')
 
 # %% [markdown]
 # ## 3. Tables 3–4 and the paired t-test of §7
@@ -363,7 +377,7 @@ display(
     )
 )
 display(causal)
-display(Image(filename=figures["causal"]))
+R.figure("causal", 'M5 against its causal twin and the Kalman α-β designs: RMSE per method.')
 
 # %% [markdown]
 # ## 7. Sensitivity to the settings the paper does not print
