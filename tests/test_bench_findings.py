@@ -22,8 +22,13 @@ LEAGUE = pd.DataFrame(
 
 def test_ranking_metric_is_the_column_that_orders_the_ranks():
     assert findings.ranking_metric(LEAGUE) == "rmse_x_pred"
-    with pytest.raises(ValueError, match="expected exactly one"):
+    with pytest.raises(ValueError, match="no metric column"):
         findings.ranking_metric(LEAGUE.drop(columns="rmse_x_pred"))
+    # a variant without the metric (NaN) ranked after those with it does not disqualify it
+    smooth = LEAGUE.drop(columns="rmse_x_pred").assign(
+        rmse_x_smooth=[9, 10, 13, float("nan"), 3, 6, 1]
+    )
+    assert findings.ranking_metric(smooth) == "rmse_x_smooth"
 
 
 def test_leaders_and_margin_over_the_best_other_family():

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
+import numpy as np
 import pandas as pd
 
 __all__ = ["leaders", "peer_disagreements", "ranking_metric", "tradeoff_extremes"]
@@ -25,12 +26,14 @@ def _ranked(league: pd.DataFrame) -> pd.DataFrame:
 
 def ranking_metric(league: pd.DataFrame) -> str:
     """The metric column (``rmse_*`` or ``max_*``) whose ascending order is the league's
-    ``rank`` in every scenario (diverged variants excluded).
+    ``rank`` in every scenario (diverged variants excluded; variants without the metric,
+    e.g. adaptive methods without a smoothed output, must come after those with it).
+    When several columns order every scenario alike, the first in the table's order.
 
     Raises
     ------
     ValueError
-        If no column, or more than one, orders every scenario as ``rank`` does.
+        If no column orders every scenario as ``rank`` does.
     """
     live = _ranked(league)
     candidates = [c for c in league.columns if c.startswith(("rmse_", "max_"))]
@@ -38,17 +41,16 @@ def ranking_metric(league: pd.DataFrame) -> str:
     for col in candidates:
         ok = True
         for _, d in live.groupby("scenario", sort=False):
-            d = d.sort_values("rank")
-            values = d[col].to_numpy(dtype=float)
-            if pd.isna(values).any() or (values[1:] < values[:-1]).any():
+            values = d.sort_values("rank")[col].to_numpy(dtype=float)
+            have = ~np.isnan(values)
+            n = int(have.sum())
+            if n == 0 or not have[:n].all() or (np.diff(values[:n]) < 0).any():
                 ok = False
                 break
         if ok:
             found.append(col)
-    if len(found) != 1:
-        raise ValueError(
-            f"the league's rank follows {len(found)} metric columns ({found}), expected exactly one"
-        )
+    if not found:
+        raise ValueError(f"no metric column of {candidates} orders the league as its rank does")
     return found[0]
 
 
