@@ -273,3 +273,20 @@ def test_assets_are_written_once_per_folder_and_load_nothing_from_the_network(tm
     for p in tmp_path.iterdir():
         text = p.read_text(encoding="utf-8")
         assert "http" not in text and "@import" not in text and "url(" not in text
+
+
+def test_rows_whose_notes_share_a_reason_group_and_keep_their_own_notes():
+    df = pd.DataFrame(
+        {
+            "item": [f"Table 1, row {i}" for i in range(7)],
+            "verdict": ["not_reproducible"] * 7,
+            "note": [f"trajectory not published; reconstruction: {i}.0 m" for i in range(7)],
+        }
+    )
+    out = table_html(df, group_min=6)
+    assert out.count('class="group"') == 1
+    assert "with notes starting: trajectory not published</summary>" in out
+    assert "reconstruction: 6.0 m" in out and "<th>note</th>" in out.split("inner")[1]
+    assert 'class="scroll"' in out and 'class="scroll long"' not in out
+    long = table_html(pd.DataFrame({"x": range(40)}))
+    assert 'class="scroll long"' in long

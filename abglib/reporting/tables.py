@@ -5,15 +5,16 @@ The markup is the contract with ``assets/report.css`` and ``assets/report.js`` (
 filtering) and with the browser test:
 
 - ``figure.abg-table`` wraps a table and its ``figcaption``; ``div.scroll`` lets a wide
-  table scroll inside the page (and print whole);
+  table scroll inside the page (and print whole); ``div.scroll.long`` also limits the
+  height of a table of more than ``LONG_ROWS`` rows on screen (not in print);
 - ``table.data`` is a data table; each body row carries ``data-verdict``,
   ``data-section`` (the part of ``item`` before its first comma) and ``data-robust`` when
   the table has those columns, which the filters use;
 - a verdict cell holds ``span.v.v-<verdict>`` (``match``, ``mismatch``, ``explained``,
   ``not_reproducible``); a robustness cell ``span.v.r-true`` / ``span.v.r-false``;
 - ``tr.group`` is a collapsed run of rows: one cell holding ``details`` whose ``summary``
-  names the count, the verdict and the note, and whose body is a ``table.data.inner`` with
-  every row of the run.
+  names the count, the verdict and the note (or the reason the notes start with, up to their
+  first ";"), and whose body is a ``table.data.inner`` with every row of the run.
 """
 
 from __future__ import annotations
@@ -24,12 +25,14 @@ from collections.abc import Mapping, Sequence
 
 import pandas as pd
 
-__all__ = ["VERDICTS", "cell_strings", "group_runs", "section_of", "table_html"]
+__all__ = ["VERDICTS", "cell_strings", "group_runs", "note_reason", "section_of", "table_html"]
 
 #: verdicts in the order they are listed everywhere (counts, bars, filters)
 VERDICTS = ("match", "mismatch", "explained", "not_reproducible")
 #: a run of at least this many consecutive rows with one verdict and one note is collapsed
 GROUP_MIN = 6
+#: a table with more rows (after grouping) scrolls inside a box of limited height on screen
+LONG_ROWS = 30
 
 
 def _blank(value) -> bool:
@@ -75,6 +78,12 @@ def group_runs(keys: Sequence, minimum: int = GROUP_MIN) -> list[tuple[int, int]
                 runs.append((start, i))
             start = i
     return runs
+
+
+def note_reason(note: str) -> str:
+    """The reason a note starts with: its text up to the first ``;`` (notes of one kind
+    share it and go on with row-specific numbers)."""
+    return note.split(";")[0].strip()
 
 
 def _flat(df: pd.DataFrame) -> pd.DataFrame:
@@ -158,8 +167,8 @@ def table_html(
         raise KeyError(f"group_by columns {missing} are not columns of the table {columns}")
     if not missing and group_min:
         keys = [tuple(r[idx[c]] for c in shared) for r in text]
-        if not group_by:  # a run of empty notes says nothing: not grouped
-            keys = [k if k[1] else None for k in keys]
+        if not group_by:  # rows share a verdict and the reason their notes start with
+            keys = [(v, note_reason(n)) if n else None for v, n in keys]
 
     def data_attrs(rows: Sequence[Sequence[str]]) -> str:
         out = []
@@ -181,8 +190,11 @@ def table_html(
     while i < len(text):
         if i in runs:
             stop = runs[i]
-            inner_cols = [c for c in columns if c not in shared]
-            inner = "".join(row(r, frozenset(shared)) for r in text[i:stop])
+            drop = set(shared)
+            if not group_by and len({r[idx["note"]] for r in text[i:stop]}) > 1:
+                drop.discard("note")  # the notes differ after their shared reason: kept
+            inner_cols = [c for c in columns if c not in drop]
+            inner = "".join(row(r, frozenset(drop)) for r in text[i:stop])
             if group_by:
                 what = ", ".join(
                     f"{c} = {html.escape(v)}" for c, v in zip(shared, keys[i], strict=True)
@@ -190,9 +202,10 @@ def table_html(
                 summary = f"{stop - i} rows with {what}"
             else:
                 verdict, note = keys[i]
+                same = "the note" if "note" in drop else "notes starting"
                 summary = (
                     f'{stop - i} rows, all <span class="v v-{html.escape(verdict)}">'
-                    f"{html.escape(verdict)}</span> with the note: {html.escape(note)}"
+                    f"{html.escape(verdict)}</span> with {same}: {html.escape(note)}"
                 )
             body.append(
                 f'<tr class="group"{data_attrs(text[i:stop])}><td colspan="{len(columns)}">'
@@ -212,8 +225,9 @@ def table_html(
         cap = f"<figcaption>{label}{caption or ''}{extra}</figcaption>"
     attr = "".join(f' {k}="{html.escape(str(v))}"' for k, v in (attrs or {}).items())
     filt = f' data-filters="{" ".join(filters)}"' if filters else ""
+    scroll = "scroll long" if len(body) > LONG_ROWS else "scroll"
     return (
-        f'<figure class="abg-table"{attr}>{cap}<div class="scroll">'
+        f'<figure class="abg-table"{attr}>{cap}<div class="{scroll}">'
         f'<table class="data"{filt}>{_head(columns)}<tbody>{"".join(body)}</tbody></table>'
         "</div></figure>"
     )

@@ -420,7 +420,11 @@ flips = flips[flips["verdict"] > 1]
 display(Markdown("**Inputs that flip a verdict (number of rows)**"))
 display(flips.groupby("input").size().rename("rows").to_frame())
 display(comparison[comparison["robust"] == "false"][["item", "note"]])
-display(robustness)
+R.table(
+    robustness,
+    "Every point of every robustness sweep (`robustness.csv`), one group per claim.",
+    group_by=("key",),
+)
 
 # %% [markdown]
 # ## 9. Every published number and claim

@@ -484,7 +484,11 @@ md(
 verdict across every plausible value, {int((dep['robust'] == 'false').sum())} flip."""
 )
 display(dep[["item", "quantity", "verdict", "depends_on", "robust", "note"]])
-display(robustness)
+R.table(
+    robustness,
+    "Every point of every robustness sweep (`robustness.csv`), one group per claim.",
+    group_by=("key",),
+)
 
 # %% [markdown]
 # ## Provenance

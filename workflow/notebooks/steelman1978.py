@@ -195,7 +195,11 @@ display(non_matches(comparison))
 # %%
 dep = comparison[comparison["depends_on"] != ""]
 display(dep[["item", "depends_on", "robust", "verdict", "note"]])
-display(robustness)
+R.table(
+    robustness,
+    "Every point of every robustness sweep (`robustness.csv`), one group per claim.",
+    group_by=("key",),
+)
 
 # %% [markdown]
 # ## 1. Figures 1–6
