@@ -82,12 +82,14 @@ def markdown_html(text: str, inline: bool = False) -> str:
     return re.sub("\x00(\\d+)\x00", lambda m: maths[int(m.group(1))], out)
 
 
-_SECTION_REF = re.compile(r"§\s?(\d+)|\b([Ss]ections?) (\d+)")
+# "section 7" is this report's section 7; "§7" is left alone (the source's own sections)
+_SECTION_REF = re.compile(r"\b([Ss]ections?) (\d+)((?:, | and )(\d+))?")
 
 
 def link_sections(fragment: str, known: set[str]) -> str:
-    """Turn "§7" and "section 7" in text (not inside links, code or tags) into links to
-    ``#sec-7`` when the page has that section."""
+    """Turn "section 7" (and "sections 7, 8" / "sections 7 and 8") in text, not inside
+    links, code or tags, into links to ``#sec-7`` when the page has that section. "§7" is
+    not linked: the reports use it for the source document's own sections."""
     parts = re.split(r"(<[^>]+>)", fragment)
     depth = 0
     for i, part in enumerate(parts):
@@ -100,10 +102,15 @@ def link_sections(fragment: str, known: set[str]) -> str:
             continue
 
         def sub(m):
-            n = m.group(1) or m.group(3)
-            if f"sec-{n}" not in known:
-                return m.group(0)
-            return f'<a href="#sec-{n}">{m.group(0)}</a>'
+            word, first, tail, second = m.groups()
+
+            def link(n, text):
+                return f'<a href="#sec-{n}">{text}</a>' if f"sec-{n}" in known else text
+
+            out = link(first, f"{word} {first}")
+            if tail:
+                out += tail[: -len(second)] + link(second, second)
+            return out
 
         parts[i] = _SECTION_REF.sub(sub, part)
     return "".join(parts)

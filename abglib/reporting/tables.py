@@ -217,7 +217,7 @@ def table_html(
         else:
             body.append(row(text[i]))
             i += 1
-    filters = [c for c in ("verdict", "item", "robust") if c in idx]
+    filters = [c for c in ("verdict", "item", "robust") if c in idx] if "verdict" in idx else []
     label = f"<b>Table {number}.</b> " if number is not None else ""
     cap = ""
     if caption or number is not None or source:

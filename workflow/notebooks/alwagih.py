@@ -204,7 +204,7 @@ themselves {int((tt_print["p_value"] < 0.001).sum())} of {len(tt_print)} do (fiv
 (3) The paper's Tables 3–6 do not all follow from its Tables 1–2: e.g. M1 − M3 in X: printed
 {printed("Table 3, relative to M1, X, M3")}, {g(c3["central"].iloc[0], 5)} from Table 1; M2 − M3 in
 Y: printed {printed("Table 3, relative to M2, Y, M3")}, {g(c3b["central"].iloc[0], 5)} from Table 1
-(so even the sign section 7 states fails on the printed Table 1); Table 5, experiment 4, Y, M4:
+(so even the sign §7 of the paper states fails on the printed Table 1); Table 5, experiment 4, Y, M4:
 printed {printed("Table 5, experiment 4, Y, M4")}, {g(c5["central"].iloc[0], 5)} from Table 1; see
 *Consistency of the printed tables*.
 

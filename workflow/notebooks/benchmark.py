@@ -140,7 +140,7 @@ R.abstract(
 # the two axes of the trade-off figure.
 #
 # **Measured VRF.** The mean square of the noise part after the variant's own transient has
-# decayed (pole radius^n < 10⁻⁸), divided by σ², against the exact VRF (`abglib.analysis.vrf`
+# decayed (pole radiusⁿ < 10⁻⁸), divided by σ², against the exact VRF (`abglib.analysis.vrf`
 # for white noise; for AR(1) noise the Lyapunov equation of the tracker augmented with the
 # noise's shaping filter, `abglib.bench.metrics.coloured_vrf`). Samples within a run are correlated,
 # so the confidence interval comes from the spread of the per-run estimates across runs

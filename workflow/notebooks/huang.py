@@ -139,35 +139,35 @@ also undoes the paper's type I / type II comparison."""
 )
 md(
     f"""**What holds.** The transfer functions (eqs 3, 4, 6, reading the stray "a" as α) are
-exactly the canonical ones with γ = 2γ_H (§1). Eq 14 is the exact α-β ENBW. A closed form for the
+exactly the canonical ones with γ = 2γ_H (section 1). Eq 14 is the exact α-β ENBW. A closed form for the
 α-β-γ ENBW does follow from eqs 8–12, and once three slips are corrected eq 13 agrees with
-the exact (Lyapunov) ENBW (§2). The type I rule is the steady-state Kalman filter of the
-white-acceleration-increment model, type II is critically damped (triple pole at ξ; §4). The
-acceleration error A/(β F_r²) is exactly the predicted-position lag (§5), and both numeric
-examples reproduce (§7): **{rep('Fig 5 text, 4.44 m'):.3f} m** (printed {by_item.loc['Fig 5 text, 4.44 m', 'published']}) and
+the exact (Lyapunov) ENBW (section 2). The type I rule is the steady-state Kalman filter of the
+white-acceleration-increment model, type II is critically damped (triple pole at ξ; section 4). The
+acceleration error A/(β F_r²) is exactly the predicted-position lag (section 5), and both numeric
+examples reproduce (section 7): **{rep('Fig 5 text, 4.44 m'):.3f} m** (printed {by_item.loc['Fig 5 text, 4.44 m', 'published']}) and
 **{rep('Fig 5 text, 111 m'):.1f} m** (printed {by_item.loc['Fig 5 text, 111 m', 'published']}). Every α-β set of Tables 1–2 is stable.
 
 **What does not, and why.**
 1. *Eq 8 is two-sided*: its whole-band integral is {span(ratio8, '.6f')} times the B_n of
    eqs 9–14. Eq 2 prints T²R″ for T²R″/2. Eq 13 read literally is {span(lit, '.3g')} times
-   too small on the printed α-β-γ sets (§1, §2).
+   too small on the printed α-β-γ sets (sections 1, 2).
 2. *Eq 5 is not a stability condition*: it misses Jury's αβ + αγ_H − 2γ_H > 0 (seed 000,
    eq 47), and the printed type I α-β-γ sets {', '.join(unstable['cell'])} pass eq 5 with
-   pole radius {', '.join(f'{r:.3f}' for r in unstable['pole_radius'])} (§3).
+   pole radius {', '.join(f'{r:.3f}' for r in unstable['pole_radius'])} (section 3).
 3. *The α-β-γ columns of Tables 1–2 do not have the ENBW they are listed under*: the stable
    sets have {span(abg_stable['enbw_exact'], '.0f')} Hz. Type I α-β: the printed ξ give
-   {', '.join(f'{v:.2f}' for v in ab_cells[ab_cells['rule'] == 'type1']['enbw_exact'])} Hz (§4).
+   {', '.join(f'{v:.2f}' for v in ab_cells[ab_cells['rule'] == 'type1']['enbw_exact'])} Hz (section 4).
 4. *The jerk error B/(γ F_r³)* is right only for the canonical γ; in the paper's own
-   convention it is twice the true lag (§5).
+   convention it is twice the true lag (section 5).
 5. *σ ≤ {sigma_budget:g} m needs B_n under {rep('Fig 4 text, ENBW limit'):.1f} Hz* with the
    printed thermal formula, not {stated_limit} Hz; {stated_limit} Hz is roughly what the formula
-   gives with the two-sided ENBW of eq 8 (§6).
+   gives with the two-sided ENBW of eq 8 (section 6).
 6. *Type I "loses the track" at low ENBW* and *type II better than type I* do not hold for
    loops started anywhere inside the gate. *Type II's overshoot growing with ENBW* holds
    only for loops started off the range (started on it, a critically damped loop does not
    overshoot), and *type I's larger oscillation at low ENBW* only for loops started close to
    it (otherwise the largest error of both loops is the initial one): these two, the 2 Hz
-   sentence and "overranged" hinge on the initial range error or the gate (§8, §11)."""
+   sentence and "overranged" hinge on the initial range error or the gate (sections 8, 11)."""
 )
 R.table(non_matches(comparison), "Every row of `comparison.csv` that is not a match.", "comparison")
 
