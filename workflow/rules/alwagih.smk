@@ -127,6 +127,6 @@ rule alwagih_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
-        page=lambda wildcards, input: report_page("alwagih", input),
+        page=lambda wildcards, input: REPORT_PAGE("alwagih", input),
     script:
         "../scripts/render_report.py"

@@ -98,6 +98,6 @@ rule antenna_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
-        page=lambda wildcards, input: report_page("antenna", input),
+        page=lambda wildcards, input: REPORT_PAGE("antenna", input),
     script:
         "../scripts/render_report.py"

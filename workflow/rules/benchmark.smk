@@ -226,6 +226,6 @@ rule benchmark_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
-        page=lambda wildcards, input: report_page("benchmark", input),
+        page=lambda wildcards, input: REPORT_PAGE("benchmark", input),
     script:
         "../scripts/render_report.py"

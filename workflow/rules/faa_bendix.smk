@@ -99,6 +99,6 @@ rule faa_bendix_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
-        page=lambda wildcards, input: report_page("faa_bendix", input),
+        page=lambda wildcards, input: REPORT_PAGE("faa_bendix", input),
     script:
         "../scripts/render_report.py"

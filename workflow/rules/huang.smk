@@ -97,6 +97,6 @@ rule huang_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
-        page=lambda wildcards, input: report_page("huang", input),
+        page=lambda wildcards, input: REPORT_PAGE("huang", input),
     script:
         "../scripts/render_report.py"

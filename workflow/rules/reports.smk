@@ -1,4 +1,6 @@
-import os
+from functools import partial
+
+from abglib.reporting.pipeline import report_page
 
 # The version's index page (CONTRACTS.md §4). Each document's report rule lives in the
 # document's own .smk file.
@@ -14,33 +16,8 @@ REPORT_ORDER = [*DOCS, *(["benchmark"] if BENCH else [])]
 REPORT_TITLES = {**DOC_TITLES, "benchmark": "Benchmark matrix"}
 
 
-def made_by(paths):
-    """{file name: (rule, script)} of the rule that writes each path (showyourwork-style
-    captions: each figure and table names the rule and script that made it)."""
-    out = {}
-    for path in paths:
-        for r in workflow.rules:
-            if r.name.endswith("_report") or not r.is_producer(path):
-                continue
-            script = ""
-            if r.script:
-                full = Path(r.snakefile).parent / r.script
-                script = os.path.relpath(os.path.normpath(full), workflow.basedir)
-            out[Path(path).name] = (r.name, script)
-            break
-    return out
-
-
-def report_page(doc, input):
-    """Params of a report rule: its neighbours on the index and the rules behind its
-    figures and tables."""
-    i = REPORT_ORDER.index(doc)
-    nav = {
-        rel: {"doc": REPORT_ORDER[j], "title": REPORT_TITLES.get(REPORT_ORDER[j])}
-        for rel, j in (("prev", i - 1), ("next", i + 1))
-        if 0 <= j < len(REPORT_ORDER)
-    }
-    return {"nav": nav, "made_by": made_by([*input.figures, *input.tables])}
+# params of each <doc>_report rule: its neighbours and the rules behind its files
+REPORT_PAGE = partial(report_page, workflow, REPORT_ORDER, REPORT_TITLES)
 
 
 rule report_assets:

@@ -112,6 +112,6 @@ rule steelman_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
-        page=lambda wildcards, input: report_page("steelman1978", input),
+        page=lambda wildcards, input: REPORT_PAGE("steelman1978", input),
     script:
         "../scripts/render_report.py"
