@@ -292,3 +292,36 @@ def test_rows_whose_notes_share_a_reason_group_and_keep_their_own_notes():
     assert 'class="scroll"' in out and 'class="scroll long"' not in out
     long = table_html(pd.DataFrame({"x": range(40)}))
     assert 'class="scroll long"' in long
+
+
+def test_report_page_names_neighbours_and_the_rule_behind_each_file():
+    from types import SimpleNamespace
+
+    from abglib.reporting.pipeline import report_page
+
+    def rule(name, out, script):
+        return SimpleNamespace(
+            name=name,
+            script=script,
+            snakefile="/repo/workflow/rules/x.smk",
+            is_producer=lambda p: p.startswith(out),
+        )
+
+    wf = SimpleNamespace(
+        basedir="/repo",
+        rules=[
+            rule("d_report", "results/d", "../scripts/render_report.py"),
+            rule("d_figures", "results/d/figures/", "../scripts/d_figures.py"),
+            rule("d_reproduce", "results/d/", "../scripts/reproduce.py"),
+        ],
+    )
+    files = SimpleNamespace(
+        figures=["results/d/figures/f.png"], tables=["results/d/comparison.csv"]
+    )
+    page = report_page(wf, ["c", "d", "e"], {"c": "C", "e": "E"}, "d", files)
+    assert page["nav"] == {"prev": {"doc": "c", "title": "C"}, "next": {"doc": "e", "title": "E"}}
+    assert page["made_by"] == {
+        "f.png": ("d_figures", "workflow/scripts/d_figures.py"),
+        "comparison.csv": ("d_reproduce", "workflow/scripts/reproduce.py"),
+    }
+    assert report_page(wf, ["d"], {}, "d", files)["nav"] == {}
