@@ -24,7 +24,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from .tables import table_html
+from .tables import GROUP_MIN, table_html
 
 __all__ = ["Report", "png_text"]
 
@@ -157,6 +157,7 @@ class Report:
         caption: str | None = None,
         source: str | None = None,
         group_by: tuple = (),
+        group_min: int = GROUP_MIN,
     ) -> str:
         """The HTML of a numbered table (the next number)."""
         self.n_tables += 1
@@ -168,6 +169,7 @@ class Report:
             source=self._table_source(key),
             attrs={"id": f"tab-{self.n_tables}"},
             group_by=group_by,
+            group_min=group_min,
         )
 
     def table(
@@ -176,12 +178,13 @@ class Report:
         caption: str | None = None,
         source: str | None = None,
         group_by: tuple = (),
+        group_min: int = GROUP_MIN,
     ) -> None:
         """Display ``df`` as a numbered table with ``caption`` and its source; ``group_by``
         collapses runs of rows sharing those columns' values (see ``table_html``)."""
         from IPython.display import HTML, display
 
-        display(HTML(self.table_markup(df, caption, source, group_by)))
+        display(HTML(self.table_markup(df, caption, source, group_by, group_min)))
 
     def figure(self, key: str, caption: str = "", alt: str | None = None) -> None:
         """Display ``figures/<key>.png`` as a numbered figure.

@@ -329,6 +329,7 @@ R.table(
     "Every evaluated case of every equation (all rows), one group per equation: open a group "
     "to see its cases.",
     group_by=("equation",),
+    group_min=3,
 )
 
 # %% [markdown]
