@@ -88,6 +88,11 @@ def test_group_by_a_column_for_tables_without_verdicts():
     df = pd.DataFrame({"equation": ["eq 11"] * 7 + ["eq 12"] * 2, "case": range(9)})
     out = table_html(df, group_by=("equation",), group_min=6)
     assert "7 rows with equation = eq 11" in out and out.count('class="group"') == 1
+    # interleaved rows of one key are brought together, in order of first appearance
+    mixed = pd.DataFrame({"equation": ["b", "a", "b", "a", "b", "a"], "case": range(6)})
+    out = table_html(mixed, group_by=("equation",), group_min=3)
+    assert out.index("3 rows with equation = b") < out.index("3 rows with equation = a")
+    assert re.findall(r"<td class=\"num\">(\d)</td>", out) == ["0", "2", "4", "1", "3", "5"]
     with pytest.raises(KeyError, match="group_by"):
         table_html(df, group_by=("nope",))
 

@@ -148,8 +148,9 @@ def table_html(
     attrs : mapping, optional
         Extra attributes of the ``figure`` element (e.g. ``{"id": "tab-3"}``).
     group_by : sequence of str
-        Group runs of consecutive rows with the same values in these columns instead
-        (for tables without verdicts, e.g. one group per equation).
+        Group the rows with the same values in these columns instead (for tables without
+        verdicts, e.g. one group per equation): rows of one key are brought together, keys
+        in order of first appearance, and a key with at least ``group_min`` rows is one group.
     """
     flat = _flat(df)
     columns = [str(c) for c in flat.columns]
@@ -167,6 +168,10 @@ def table_html(
         raise KeyError(f"group_by columns {missing} are not columns of the table {columns}")
     if not missing and group_min:
         keys = [tuple(r[idx[c]] for c in shared) for r in text]
+        if group_by:  # rows of one key together, keys in order of first appearance
+            first = {k: i for i, k in reversed(list(enumerate(keys)))}
+            order = sorted(range(len(keys)), key=lambda i: first[keys[i]])
+            text, keys = [text[i] for i in order], [keys[i] for i in order]
         if not group_by:  # rows share a verdict and the reason their notes start with
             keys = [(v, note_reason(n)) if n else None for v, n in keys]
 
