@@ -7,6 +7,7 @@ invocation in the same directory schedules nothing.
 """
 
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -109,8 +110,16 @@ def test_comparison_contract_and_scorecard(two_runs):
 
 
 def test_report_is_self_contained_and_relocatable(two_runs):
-    html = (two_runs[0] / REPORTS / "steelman1978" / "index.html").read_text(encoding="utf-8")
-    assert "data:image/png;base64," in html
+    """Every file a page links exists in the version folder (CONTRACTS.md §4), images are
+    linked rather than embedded, and nothing is loaded from the network."""
+    page = two_runs[0] / REPORTS / "steelman1978" / "index.html"
+    html = page.read_text(encoding="utf-8")
+    links = set(re.findall(r'(?:src|href)="([^"#]+)"', html))
+    assert any(link.startswith("figures/") for link in links)
+    assert {"../assets/report.css", "../assets/report.js", "../index.html"} <= links
+    missing = [link for link in links if not (page.parent / link).is_file()]
+    assert missing == []
+    assert "data:image/png;base64," not in html and "http" not in html
     assert str(two_runs[0]) not in html and str(REPO) not in html
     assert "config sha256" in html
 

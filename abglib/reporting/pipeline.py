@@ -221,3 +221,32 @@ def atomic_output(path):
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+
+
+def made_by(workflow, paths) -> dict[str, tuple[str, str]]:
+    """``{file name: (rule, script)}``: the rule of ``workflow`` that writes each path and
+    its script relative to the repository (showyourwork-style captions)."""
+    out = {}
+    for path in paths:
+        for r in workflow.rules:
+            if r.name.endswith("_report") or not r.is_producer(path):
+                continue
+            script = ""
+            if r.script:
+                full = Path(r.snakefile).parent / r.script
+                script = Path(os.path.relpath(os.path.normpath(full), workflow.basedir)).as_posix()
+            out[Path(path).name] = (r.name, script)
+            break
+    return out
+
+
+def report_page(workflow, order, titles, doc, input) -> dict:
+    """Params of a report rule: its neighbours in ``order`` (``{"prev", "next"}`` with
+    ``doc`` and ``title``) and :func:`made_by` of its figures and tables."""
+    i = list(order).index(doc)
+    nav = {
+        rel: {"doc": order[j], "title": titles.get(order[j], order[j])}
+        for rel, j in (("prev", i - 1), ("next", i + 1))
+        if 0 <= j < len(order)
+    }
+    return {"nav": nav, "made_by": made_by(workflow, [*input.figures, *input.tables])}

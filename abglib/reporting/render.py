@@ -4,19 +4,29 @@ A report is a jupytext percent-format notebook (``workflow/notebooks/<doc>.py``)
 *reads* what upstream rules computed. :func:`render_notebook` injects the pipeline's
 parameters after the cell tagged ``parameters`` (papermill's convention), executes the
 notebook headless with nbclient, strips everything that varies between runs (execution
-timestamps, kernel versions, stderr streams) and exports HTML with images embedded.
-:func:`write_index` writes the per-version index page with the scorecard.
+timestamps, kernel versions, stderr streams) and writes the page with
+:func:`abglib.reporting.page.build_page` (code hidden, equations as MathML, figures
+linked from ``figures/``, shared assets in ``../assets/``). :func:`write_index` writes
+the per-version index page; :func:`write_assets` the shared stylesheet and script.
 """
 
 from __future__ import annotations
 
-import html
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 import pandas as pd
 
-__all__ = ["inject_parameters", "render_notebook", "strip_volatile", "write_index", "write_text"]
+__all__ = [
+    "inject_parameters",
+    "render_notebook",
+    "report_context",
+    "strip_volatile",
+    "verdict_counts",
+    "write_assets",
+    "write_index",
+    "write_text",
+]
 
 
 def write_text(path, text: str) -> None:
@@ -81,8 +91,9 @@ def render_notebook(
     name: str = "report",
     timeout: int = 600,
     log=None,
+    page: Mapping | None = None,
 ) -> None:
-    """Execute a jupytext percent notebook headless and export self-contained HTML.
+    """Execute a jupytext percent notebook headless and write it as a report page.
 
     Parameters
     ----------
@@ -101,6 +112,9 @@ def render_notebook(
         Per-cell timeout in seconds.
     log : callable, optional
         Receives stderr text removed from the outputs.
+    page : mapping, optional
+        Keyword arguments of :func:`abglib.reporting.page.build_page` (version, verdict
+        counts, neighbours, files beside the page, notebook path).
 
     Raises
     ------
@@ -113,7 +127,6 @@ def render_notebook(
     import jupytext
     import nbclient
     from jupyter_client import KernelManager
-    from nbconvert import HTMLExporter
 
     nb = jupytext.read(source, fmt="py:percent")
     nb.metadata["kernelspec"] = {
@@ -138,8 +151,9 @@ def render_notebook(
     if log is not None:
         for text in removed:
             log(text)
-    exporter = HTMLExporter(template_name="lab", embed_images=True)
-    body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": name}})
+    from .page import build_page
+
+    body = build_page(nb, **{"doc": name, "version": "dev", **dict(page or {})})
     absolute = str(Path(cwd).resolve())
     if absolute != "/" and absolute in body:
         raise RuntimeError(
@@ -149,11 +163,61 @@ def render_notebook(
     write_text(html_path, body)
 
 
-_INDEX_CSS = """
-body { font-family: sans-serif; max-width: 60em; margin: 2em auto; line-height: 1.4; }
-table { border-collapse: collapse; } td, th { border: 1px solid #bbb; padding: .25em .6em; }
-th { background: #eee; } td.num { text-align: right; } code { background: #f4f4f4; }
-"""
+def report_context(doc, version, input, output, *, repo, nav, made_by, provenance):
+    """The notebook's parameters and the page's arguments of one report rule.
+
+    ``input`` has ``notebook``, ``figures`` and ``tables`` (what upstream rules wrote);
+    ``output`` the ``figures`` and ``tables`` copied beside the page.
+    """
+    figures = {Path(p).stem: str(p) for p in input.figures}
+    tables = {Path(p).stem: str(p) for p in input.tables}
+    notebook = Path(input.notebook).resolve().relative_to(Path(repo).resolve()).as_posix()
+    parameters = {
+        "doc": doc,
+        "version": version,
+        "figures": figures,
+        "tables": tables,
+        "made_by": dict(made_by),
+        "notebook": notebook,
+        "provenance": provenance,
+    }
+    page = {
+        "doc": doc,
+        "version": version,
+        "nav": dict(nav),
+        "notebook": notebook,
+        "files": {
+            "tables": [Path(p).name for p in output.tables],
+            "figures": [Path(p).name for p in output.figures],
+        },
+    }
+    if "comparison" in tables:
+        comparison = pd.read_csv(tables["comparison"], dtype=str, keep_default_na=False)
+        page["counts"], page["robust"] = verdict_counts(comparison)
+    return parameters, page
+
+
+def write_assets(folder) -> list[Path]:
+    """Copy the shared stylesheet and script into ``folder`` (``<version>/assets``)."""
+    from .page import ASSETS
+
+    out = []
+    for src in sorted(ASSETS.iterdir()):
+        if src.suffix in (".css", ".js"):
+            dst = Path(folder) / src.name
+            write_text(dst, src.read_text(encoding="utf-8"))
+            out.append(dst)
+    return out
+
+
+def verdict_counts(comparison: pd.DataFrame) -> tuple[dict[str, int], tuple[int, int]]:
+    """Verdict counts and (robust, fragile) row counts of one ``comparison.csv``."""
+    from .tables import VERDICTS
+
+    verdict = comparison["verdict"].astype(str)
+    counts = {v: int((verdict == v).sum()) for v in VERDICTS}
+    robust = comparison.get("robust", pd.Series(dtype=str)).astype(str).str.lower()
+    return counts, (int((robust == "true").sum()), int((robust == "false").sum()))
 
 
 def write_index(
@@ -164,7 +228,8 @@ def write_index(
     provenance: Mapping,
     extras: Sequence[Mapping] = (),
 ) -> None:
-    """Write ``reports/v<version>/index.html``: the scorecard and links to each report.
+    """Write ``reports/v<version>/index.html``: every report with its headline and
+    verdict bar, the changes page, the scorecard and the provenance.
 
     Parameters
     ----------
@@ -175,65 +240,38 @@ def write_index(
     scorecard : DataFrame
         ``results/scorecard.csv``.
     documents : sequence of mapping
-        ``{"doc", "title", "href"}`` per report, ``href`` relative to the index.
+        ``{"doc", "title", "href", "headline"}`` per report, ``href`` relative to the index.
     provenance : mapping
         From :func:`abglib.provenance.collect`.
     extras : sequence of mapping
-        ``{"title", "href", "description"}`` per report that replicates no source document
-        (e.g. the benchmark matrix), listed under "Other reports".
+        ``{"doc", "title", "href", "headline"}`` per report that replicates no source
+        document (e.g. the benchmark matrix); listed after the documents, without verdicts.
     """
+    from .page import index_page
     from .provenance import to_markdown
+    from .tables import VERDICTS, table_html
 
-    esc = html.escape
-    titles = {d["doc"]: d for d in documents}
-    rows = []
-    for rec in scorecard.to_dict("records"):
-        d = titles.get(rec["doc"], {"title": rec["doc"], "href": ""})
-        link = f'<a href="{esc(d["href"])}">{esc(rec["doc"])}</a>' if d["href"] else rec["doc"]
-        cells = "".join(
-            f'<td class="num">{int(rec[c])}</td>'
-            for c in ("match", "mismatch", "explained", "not_reproducible", "total")
-        )
-        rows.append(f"<tr><td>{link}</td><td>{esc(d['title'])}</td>{cells}</tr>")
+    card = scorecard.set_index("doc")
+    entries = []
+    for d in documents:
+        e = dict(d)
+        if d["doc"] in card.index:
+            rec = card.loc[d["doc"]]
+            e["counts"] = {v: int(rec[v]) for v in VERDICTS if v in rec}
+            for k in ("robust", "fragile"):
+                if k in rec:
+                    e[k] = int(rec[k])
+        entries.append(e)
+    entries += [dict(e, counts={}) for e in extras]
     prov_rows = []
     for line in to_markdown(provenance).splitlines()[2:]:
-        cells = [c.strip() for c in line.strip("|").split("|")]
-        prov_rows.append(
-            "<tr>" + "".join(f"<td>{esc(c).replace('`', '')}</td>" for c in cells) + "</tr>"
-        )
-    other = ""
-    if extras:
-        items = "".join(
-            f'<li><a href="{esc(e["href"])}">{esc(e["title"])}</a>: {esc(e["description"])}</li>'
-            for e in extras
-        )
-        other = f"<h2>Other reports</h2>\n<ul>{items}</ul>\n"
-    page = f"""<!DOCTYPE html>
-<html lang="en">
-<head><meta charset="utf-8"><title>abglib reports v{esc(version)}</title>
-<style>{_INDEX_CSS}</style></head>
-<body>
-<h1>abglib replication reports, version {esc(version)}</h1>
-<p>Each report regenerates the figures and tables of one source document and compares every
-published number with the value abglib reproduces (<code>comparison.csv</code> in each
-report's <code>tables/</code> folder). Verdicts: <b>match</b> (within half a unit of the
-last printed digit, unless the
-report states another tolerance), <b>explained</b> (a different quantity or reading,
-demonstrated in the report, reproduces the printed number), <b>mismatch</b>,
-<b>not_reproducible</b>.</p>
-<h2>Scorecard</h2>
-<table>
-<tr><th>document</th><th>title</th><th>match</th><th>mismatch</th><th>explained</th>
-<th>not reproducible</th><th>total</th></tr>
-{chr(10).join(rows)}
-</table>
-<p>Machine-readable: <a href="scorecard.csv">scorecard.csv</a>.</p>
-{other}<h2>Provenance</h2>
-<table>
-<tr><th>item</th><th>value</th></tr>
-{chr(10).join(prov_rows)}
-</table>
-</body>
-</html>
-"""
+        cells = [c.strip().replace("`", "") for c in line.strip("|").split("|")]
+        prov_rows.append(cells[:2])
+    prov = pd.DataFrame(prov_rows, columns=["item", "value"])
+    page = index_page(
+        version,
+        entries,
+        table_html(scorecard, caption="Verdict counts per document.", group_min=0),
+        table_html(prov, group_min=0),
+    )
     write_text(path, page)

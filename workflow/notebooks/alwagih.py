@@ -61,33 +61,38 @@ tables = {
     )
 }
 provenance = None
+made_by = {}
+notebook = "workflow/notebooks/alwagih.py"
 
 # %%
 import pandas as pd
-from IPython.display import Image, Markdown, display
+from IPython.display import Markdown, display
+
+from abglib.reporting.notebook import Report
+
+R = Report(doc, figures, tables, made_by, notebook)
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 4)
 pd.set_option("display.max_columns", 40)
 pd.set_option("display.max_rows", 400)
-comparison = pd.read_csv(
-    tables["comparison"],
+comparison = R.read("comparison",
     dtype={"published": str, "depends_on": str, "robust": str},
     keep_default_na=False,
 )
-t1 = pd.read_csv(tables["table1"])
-t2 = pd.read_csv(tables["table2"])
-mc = pd.read_csv(tables["mc_rmse"])
-t34 = pd.read_csv(tables["tables34"])
-tt = pd.read_csv(tables["ttests"])
-t56 = pd.read_csv(tables["tables56"])
-cons = pd.read_csv(tables["consistency"])
-causal = pd.read_csv(tables["causal"])
-sens = pd.read_csv(tables["sensitivity"])
-bank = pd.read_csv(tables["m5_bank"])
-experiments = pd.read_csv(tables["experiments"])
-settings = pd.read_csv(tables["settings"]).set_index("name")["value"]
-robustness = pd.read_csv(tables["robustness"], dtype=str, keep_default_na=False)
+t1 = R.read("table1")
+t2 = R.read("table2")
+mc = R.read("mc_rmse")
+t34 = R.read("tables34")
+tt = R.read("ttests")
+t56 = R.read("tables56")
+cons = R.read("consistency")
+causal = R.read("causal")
+sens = R.read("sensitivity")
+bank = R.read("m5_bank")
+experiments = R.read("experiments")
+settings = R.read("settings").set_index("name")["value"]
+robustness = R.read("robustness", dtype=str, keep_default_na=False)
 PAPER = ["M1", "M2", "M3", "M4", "M5"]
 counts = comparison["verdict"].value_counts()
 
@@ -121,6 +126,15 @@ def mc_means(noise):
     d = mc[mc["noise"] == noise]
     return d.pivot_table(index=["experiment", "coord"], columns="method", values="mean")
 
+
+# %%
+R.abstract(
+    """The trajectories of Al-Wagih and Abdulla are not published, so the absolute RMSEs of
+Tables 1–2 cannot be reproduced; rankings, signs and t-tests are judged twice, on the printed
+tables and on a reconstruction. The printed tables contradict the paper (Tables 3–6 are
+arithmetic on Tables 1–2, yet many entries fall outside what rounding allows), and the
+conclusion "M5, then M4, then M3" holds in X but not in Y."""
+)
 
 # %% [markdown]
 # ## Reading guide
@@ -190,7 +204,7 @@ themselves {int((tt_print["p_value"] < 0.001).sum())} of {len(tt_print)} do (fiv
 (3) The paper's Tables 3–6 do not all follow from its Tables 1–2: e.g. M1 − M3 in X: printed
 {printed("Table 3, relative to M1, X, M3")}, {g(c3["central"].iloc[0], 5)} from Table 1; M2 − M3 in
 Y: printed {printed("Table 3, relative to M2, Y, M3")}, {g(c3b["central"].iloc[0], 5)} from Table 1
-(so even the sign section 7 states fails on the printed Table 1); Table 5, experiment 4, Y, M4:
+(so even the sign §7 of the paper states fails on the printed Table 1); Table 5, experiment 4, Y, M4:
 printed {printed("Table 5, experiment 4, Y, M4")}, {g(c5["central"].iloc[0], 5)} from Table 1; see
 *Consistency of the printed tables*.
 
@@ -278,12 +292,12 @@ display(
 )
 
 # %%
-display(Image(filename=figures["fig5_tracks"]))
-display(Image(filename=figures["fig6_tracks"]))
+R.figure("fig5_tracks", 'Al-Wagih Figure 5 recomputed on the reconstructed trajectory (X): the track and the estimates of the five methods.')
+R.figure("fig6_tracks", 'Al-Wagih Figure 6 recomputed (Y): the track and the estimates of the five methods.')
 
 # %%
-display(Image(filename=figures["fig7_rmse"]))
-display(Image(filename=figures["fig8_rmse"]))
+R.figure("fig7_rmse", 'Al-Wagih Figure 7 recomputed: RMSE of each method over the Monte Carlo runs (X).')
+R.figure("fig8_rmse", 'Al-Wagih Figure 8 recomputed: RMSE of each method over the Monte Carlo runs (Y).')
 
 # %% [markdown]
 # ## 3. Tables 3–4 and the paired t-test of §7
@@ -363,7 +377,7 @@ display(
     )
 )
 display(causal)
-display(Image(filename=figures["causal"]))
+R.figure("causal", 'M5 against its causal twin and the Kalman α-β designs: RMSE per method.')
 
 # %% [markdown]
 # ## 7. Sensitivity to the settings the paper does not print
@@ -406,7 +420,11 @@ flips = flips[flips["verdict"] > 1]
 display(Markdown("**Inputs that flip a verdict (number of rows)**"))
 display(flips.groupby("input").size().rename("rows").to_frame())
 display(comparison[comparison["robust"] == "false"][["item", "note"]])
-display(robustness)
+R.table(
+    robustness,
+    "Every point of every robustness sweep (`robustness.csv`), one group per claim.",
+    group_by=("key",),
+)
 
 # %% [markdown]
 # ## 9. Every published number and claim

@@ -34,22 +34,28 @@ tables = {
     for t in ("league", "cells", "tradeoff", "tradeoff_curves", "variants", "peers", "engine_speed")
 }
 provenance = None
+made_by = {}
+notebook = "workflow/notebooks/benchmark.py"
 
 # %%
 import pandas as pd
-from IPython.display import Image, Markdown, display
+from IPython.display import Markdown, display
 
+from abglib.bench import findings
 from abglib.reporting.compare import read_table
+from abglib.reporting.notebook import Report
+
+R = Report(doc, figures, tables, made_by, notebook)
 
 pd.set_option("display.max_colwidth", 120)
 pd.set_option("display.precision", 4)
 pd.set_option("display.max_columns", 40)
 pd.set_option("display.max_rows", 400)
-league = pd.read_csv(tables["league"])
-cells = pd.read_csv(tables["cells"])
-variants = pd.read_csv(tables["variants"])
-peers = read_table(tables["peers"])
-speed = pd.read_csv(tables["engine_speed"])
+league = R.read("league")
+cells = R.read("cells")
+variants = R.read("variants")
+peers = R.read("peers", reader=read_table)
+speed = R.read("engine_speed")
 n_var, n_sc = league["variant"].nunique(), league["scenario"].nunique()
 runs = sorted(league["runs"].unique().tolist())
 display(
@@ -60,7 +66,68 @@ display(
 )
 
 # %% [markdown]
-# ## How a cell is scored
+# ## 1. Findings
+#
+# Formatted from the league, trade-off and peers tables by `abglib.bench.findings`.
+
+# %%
+metric = findings.ranking_metric(league)
+# alwagih_M5 has seen the sample it predicts (section 4): not a realisable predictor
+lead = findings.leaders(league, metric, exclude=["alwagih_M5"])
+ext = findings.tradeoff_extremes(R.read("tradeoff"))
+disagree = findings.peer_disagreements(peers)
+wins = lead["family"].value_counts()
+lines = [
+    f"**Who leads.** Ranked by `{metric}` (the non-causal `alwagih_M5` left out), "
+    f"{len(wins)} design families share the {len(lead)} scenarios: "
+    + "; ".join(f"{fam} leads {n}" for fam, n in wins.items())
+    + ". Per scenario, the leader and its margin over the best variant of another family:"
+]
+for r in lead.itertuples():
+    lines.append(
+        f"- *{r.scenario}* ({r.noise_colour} noise): `{r.leader}` ({r.family}), {r.value:.3g}, "
+        f"{100 * r.margin:.1f} % ahead of `{r.runner_up}` ({r.runner_up_family}, "
+        f"{r.runner_up_value:.3g})."
+    )
+md_lines = "\n".join(lines)
+trade = [
+    "**Noise against lag** (smoothed position, the variants of the trade-off table). The "
+    "least noisy variant pays in lag and the least lagging in noise:"
+]
+for r in ext.itertuples():
+    if r.lag_free:
+        trade.append(
+            f"- *{r.scenario}*: no lag for any variant (lag below 10⁻⁶ of the noise), so the "
+            f"least noisy `{r.quiet}` is also the best ({r.quiet_noise:.3g} RMS)."
+        )
+        continue
+    trade.append(
+        f"- *{r.scenario}*: `{r.quiet}` has the least noise ({r.quiet_noise:.3g}) but lags "
+        f"{r.quiet_lag:.3g}; `{r.fast}` lags least ({r.fast_lag:.2g}) with {r.fast_noise:.3g} "
+        f"of noise; the best total RMSE, {r.best_rmse:.3g}, is `{r.best_rmse_variant}`'s."
+    )
+peer_lines = ["**What the peers disagree on.**"]
+for r in disagree.itertuples():
+    if r.disagreements == 0:
+        peer_lines.append(f"- {r.peer} agrees with abglib in all {r.comparisons} comparisons.")
+    else:
+        peer_lines.append(
+            f"- {r.peer} disagrees in {r.disagreements} of {r.comparisons} comparisons: the "
+            f"independent routes side with abglib in {r.settled_for_abglib}, and "
+            f"{r.not_comparable} compare a different rule ({r.functions}; section 8)."
+        )
+display(Markdown(md_lines + "\n\n" + "\n".join(trade) + "\n\n" + "\n".join(peer_lines)))
+R.abstract(
+    f"Every configured tracker variant on every simulated scenario. Ranked by `{metric}`, "
+    + "; ".join(
+        f"{r.family} leads on {r.scenario} by {100 * r.margin:.1f} %" for r in lead.itertuples()
+    )
+    + f". FilterPy disagrees with abglib in {int(disagree['disagreements'].sum())} comparisons,"
+    f" {int(disagree['settled_for_abglib'].sum())} of them settled for abglib by independent routes."
+)
+
+# %% [markdown]
+# ## 2. How a cell is scored
 #
 # Per coordinate, after a burn-in of the first samples (the two-point start-up), over all
 # runs: the RMSE and maximum absolute error of the smoothed and predicted position
@@ -73,7 +140,7 @@ display(
 # the two axes of the trade-off figure.
 #
 # **Measured VRF.** The mean square of the noise part after the variant's own transient has
-# decayed (pole radius^n < 10⁻⁸), divided by σ², against the exact VRF (`abglib.analysis.vrf`
+# decayed (pole radiusⁿ < 10⁻⁸), divided by σ², against the exact VRF (`abglib.analysis.vrf`
 # for white noise; for AR(1) noise the Lyapunov equation of the tracker augmented with the
 # noise's shaping filter, `abglib.bench.metrics.coloured_vrf`). Samples within a run are correlated,
 # so the confidence interval comes from the spread of the per-run estimates across runs
@@ -85,13 +152,13 @@ display(
 # time-varying gains (growing memory) or unstable gains say so (`vrf_check`).
 
 # %% [markdown]
-# ## Variants
+# ## 3. Variants
 
 # %%
 display(variants)
 
 # %% [markdown]
-# ## League table, per scenario
+# ## 4. League table, per scenario
 #
 # Ranked by the metric named in `benchmark.rank_by` of `config.yaml` (default
 # `rmse_x_pred`: the RMSE of the one-step predicted position, Euclidean over the coordinates,
@@ -130,16 +197,17 @@ for sc, d in league.groupby("scenario", sort=False):
     display(d[cols].reset_index(drop=True))
 
 # %% [markdown]
-# ## Heatmap across the matrix
-#
-# Smoothed-position RMSE divided by the best variant of each scenario (1 = best); grey
-# `div` cells diverged.
+# ## 5. Heatmap across the matrix
 
 # %%
-display(Image(filename=figures["heatmap"]))
+R.figure(
+    "heatmap",
+    f"`{metric}` (the league's ranking metric) of every variant divided by the best variant of "
+    "each scenario (1 = best); grey `div` cells diverged.",
+)
 
 # %% [markdown]
-# ## Noise versus lag, per design family
+# ## 6. Noise versus lag, per design family
 #
 # The RMS of the noise part and of the lag part of the smoothed-position error. Each design
 # family is swept over its design parameter (`benchmark.tradeoff_families`, table
@@ -155,10 +223,14 @@ display(Image(filename=figures["heatmap"]))
 # variant's own transient has decayed.
 
 # %%
-display(Image(filename=figures["tradeoff"]))
+R.figure(
+    "tradeoff",
+    "Noise RMS against lag RMS of the smoothed position, each design family swept over its "
+    "parameter; crosses: the configured variants.",
+)
 
 # %% [markdown]
-# ## Measured against exact variance reduction
+# ## 7. Measured against exact variance reduction
 #
 # Every fixed-gain cell with a VRF window: measured VRF of each output, its 95 % interval and
 # the exact value. White-noise cells are enforced by the build; AR(1) cells are shown against
@@ -199,7 +271,7 @@ if len(vrf_table):
     display(vrf_table.sort_values("t", key=abs, ascending=False).head(15).reset_index(drop=True))
 
 # %% [markdown]
-# ## Peers: FilterPy, scipy.signal, python-control
+# ## 8. Peers: FilterPy, scipy.signal, python-control
 #
 # The same gains through each peer (FilterPy's `k = γ/2`, converted by
 # `abglib.conventions.to_filterpy`). A disagreement is settled by independent routes that

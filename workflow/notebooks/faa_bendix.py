@@ -42,25 +42,30 @@ tables = {
     )
 }
 provenance = None
+made_by = {}
+notebook = "workflow/notebooks/faa_bendix.py"
 
 # %%
 import pandas as pd
-from IPython.display import Image, Markdown, display
+from IPython.display import Markdown, display
 
-from abglib.reporting.compare import non_matches, scorecard
+from abglib.reporting.compare import non_matches
+from abglib.reporting.notebook import Report
+
+R = Report(doc, figures, tables, made_by, notebook)
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 5)
 pd.set_option("display.max_columns", 40)
-comparison = pd.read_csv(tables["comparison"], dtype={"published": str}, keep_default_na=False)
-gains = pd.read_csv(tables["gains"])
-memo = pd.read_csv(tables["memo_table"])
-rounding = pd.read_csv(tables["rounding"])
-row7 = pd.read_csv(tables["row7"])
-damping = pd.read_csv(tables["damping_lags"])
-captions = pd.read_csv(tables["captions"])
-responses = pd.read_csv(tables["responses"])
-robustness = pd.read_csv(tables["robustness"], dtype={"value": str})
+comparison = R.read("comparison", dtype={"published": str}, keep_default_na=False)
+gains = R.read("gains")
+memo = R.read("memo_table")
+rounding = R.read("rounding")
+row7 = R.read("row7")
+damping = R.read("damping_lags")
+captions = R.read("captions")
+responses = R.read("responses")
+robustness = R.read("robustness", dtype={"value": str})
 memo_p = memo.set_index("period_s")
 rnd = rounding.set_index("period_s")
 damp = damping.set_index("period_s")
@@ -83,6 +88,14 @@ def verdicts(prefix):
         ["item", "published", "reproduced", "abs_err", "tolerance", "verdict", "note", "robust"]
     ]
 
+
+# %%
+R.abstract(
+    """The FAA test program is the canonical α-β recursion. Sinsky's smoothing table holds
+for its printed gains three ways (closed form, Lyapunov, Monte Carlo); the captions' gains
+are the memo's truncated to two decimals, not rounded; every gain set of the test is stable
+and underdamped."""
+)
 
 # %% [markdown]
 # ## Reading guide
@@ -159,7 +172,6 @@ show(
 # at each plausible value of that input (one at a time, the others nominal).
 
 # %%
-display(scorecard([comparison]).set_index("doc"))
 display(Markdown("Rows that are not a match:"))
 display(non_matches(comparison))
 display(Markdown("Robustness sweep (`robustness.csv`): the verdict of each dependent row at "
@@ -181,9 +193,12 @@ display(robustness.pivot_table(index="key", columns="value", values="verdict", a
 # %%
 display(verdicts("Purpose"))
 display(verdicts("Operation"))
-for name in ("impulse", "ramp"):
-    display(Markdown(f"**{name} responses**"))
-    display(Image(filename=figures[name]))
+R.figure(
+    "impulse",
+    "The test program's impulse responses recomputed for every gain set: solid with dots, "
+    "the captions' two-digit gains; dashed, the memo's three-digit gains.",
+)
+R.figure("ramp", "The test program's ramp responses recomputed (same key).")
 
 # %% [markdown]
 # ### The gain tables and what their difference does
@@ -346,7 +361,7 @@ display(row7)
 # drop to zero, so its graphs show transients, not these steady states.)
 
 # %%
-display(Image(filename=figures["triangle"]))
+R.figure("triangle", 'Every gain set of the test in the α-β stability triangle, with the critical-damping curve.')
 display(damping)
 
 # %% [markdown]

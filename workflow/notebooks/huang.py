@@ -41,24 +41,29 @@ tables = {
     )
 }
 provenance = None
+made_by = {}
+notebook = "workflow/notebooks/huang.py"
 
 # %%
 import pandas as pd
-from IPython.display import Image, Markdown, display
+from IPython.display import Markdown, display
 
-from abglib.reporting.compare import non_matches, read_table, scorecard
+from abglib.reporting.compare import non_matches, read_table
+from abglib.reporting.notebook import Report
+
+R = Report(doc, figures, tables, made_by, notebook)
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 5)
 pd.set_option("display.max_columns", 40)
 pd.set_option("display.max_rows", 200)
-comparison = pd.read_csv(tables["comparison"], dtype={"published": str}, keep_default_na=False)
-tab = pd.read_csv(tables["tables12"])
-routes = pd.read_csv(tables["enbw_routes"])
-metrics = read_table(tables["track_metrics"])
-robustness = pd.read_csv(tables["robustness"], keep_default_na=False)
-curves = pd.read_csv(tables["bandwidth_curves"])
-thermal = pd.read_csv(tables["thermal"])
+comparison = R.read("comparison", dtype={"published": str}, keep_default_na=False)
+tab = R.read("tables12")
+routes = R.read("enbw_routes")
+metrics = R.read("track_metrics", reader=read_table)
+robustness = R.read("robustness", keep_default_na=False)
+curves = R.read("bandwidth_curves")
+thermal = R.read("thermal")
 cells = tab.set_index("cell")
 m = metrics.set_index("tracker")
 by_item = comparison.drop_duplicates("item", keep=False).set_index("item")
@@ -124,41 +129,47 @@ ratio8 = routes["eq8_two_sided"] / routes["exact_lyapunov"]
 lit = abg_printed["exact_lyapunov"] / abg_printed["eq13_as_printed"]
 ab_cells = tab[tab["order"] == 2]
 abg_stable = tab[(tab["order"] == 3) & tab["stable_jury"].astype(bool)]
+R.abstract(
+    f"""Huang et al.'s loop is exactly the canonical α-β(-γ) tracker with γ = 2γ_H: eq 14 is
+the exact α-β ENBW and both numeric lag examples reproduce
+({rep('Fig 5 text, 4.44 m'):.3f} m and {rep('Fig 5 text, 111 m'):.1f} m). But eq 8 is two-sided,
+eq 5 is not a stability condition, and the α-β-γ gains of Tables 1–2 do not have the bandwidths
+they are listed under (the stable ones have {span(abg_stable['enbw_exact'], '.0f')} Hz), which
+also undoes the paper's type I / type II comparison."""
+)
 md(
     f"""**What holds.** The transfer functions (eqs 3, 4, 6, reading the stray "a" as α) are
-exactly the canonical ones with γ = 2γ_H. Eq 14 is the exact α-β ENBW. A closed form for the
+exactly the canonical ones with γ = 2γ_H (section 1). Eq 14 is the exact α-β ENBW. A closed form for the
 α-β-γ ENBW does follow from eqs 8–12, and once three slips are corrected eq 13 agrees with
-the exact (Lyapunov) ENBW. The type I rule is the steady-state Kalman filter of the
-white-acceleration-increment model, type II is critically damped (triple pole at ξ). The
-acceleration error A/(β F_r²) is exactly the predicted-position lag, and both numeric
-examples reproduce: **{rep('Fig 5 text, 4.44 m'):.3f} m** (printed {by_item.loc['Fig 5 text, 4.44 m', 'published']}) and
+the exact (Lyapunov) ENBW (section 2). The type I rule is the steady-state Kalman filter of the
+white-acceleration-increment model, type II is critically damped (triple pole at ξ; section 4). The
+acceleration error A/(β F_r²) is exactly the predicted-position lag (section 5), and both numeric
+examples reproduce (section 7): **{rep('Fig 5 text, 4.44 m'):.3f} m** (printed {by_item.loc['Fig 5 text, 4.44 m', 'published']}) and
 **{rep('Fig 5 text, 111 m'):.1f} m** (printed {by_item.loc['Fig 5 text, 111 m', 'published']}). Every α-β set of Tables 1–2 is stable.
 
 **What does not, and why.**
 1. *Eq 8 is two-sided*: its whole-band integral is {span(ratio8, '.6f')} times the B_n of
    eqs 9–14. Eq 2 prints T²R″ for T²R″/2. Eq 13 read literally is {span(lit, '.3g')} times
-   too small on the printed α-β-γ sets.
+   too small on the printed α-β-γ sets (sections 1, 2).
 2. *Eq 5 is not a stability condition*: it misses Jury's αβ + αγ_H − 2γ_H > 0 (seed 000,
    eq 47), and the printed type I α-β-γ sets {', '.join(unstable['cell'])} pass eq 5 with
-   pole radius {', '.join(f'{r:.3f}' for r in unstable['pole_radius'])}.
+   pole radius {', '.join(f'{r:.3f}' for r in unstable['pole_radius'])} (section 3).
 3. *The α-β-γ columns of Tables 1–2 do not have the ENBW they are listed under*: the stable
    sets have {span(abg_stable['enbw_exact'], '.0f')} Hz. Type I α-β: the printed ξ give
-   {', '.join(f'{v:.2f}' for v in ab_cells[ab_cells['rule'] == 'type1']['enbw_exact'])} Hz.
+   {', '.join(f'{v:.2f}' for v in ab_cells[ab_cells['rule'] == 'type1']['enbw_exact'])} Hz (section 4).
 4. *The jerk error B/(γ F_r³)* is right only for the canonical γ; in the paper's own
-   convention it is twice the true lag.
+   convention it is twice the true lag (section 5).
 5. *σ ≤ {sigma_budget:g} m needs B_n under {rep('Fig 4 text, ENBW limit'):.1f} Hz* with the
    printed thermal formula, not {stated_limit} Hz; {stated_limit} Hz is roughly what the formula
-   gives with the two-sided ENBW of eq 8.
+   gives with the two-sided ENBW of eq 8 (section 6).
 6. *Type I "loses the track" at low ENBW* and *type II better than type I* do not hold for
    loops started anywhere inside the gate. *Type II's overshoot growing with ENBW* holds
    only for loops started off the range (started on it, a critically damped loop does not
    overshoot), and *type I's larger oscillation at low ENBW* only for loops started close to
    it (otherwise the largest error of both loops is the initial one): these two, the 2 Hz
-   sentence and "overranged" hinge on the initial range error or the gate (section 11)."""
+   sentence and "overranged" hinge on the initial range error or the gate (sections 8, 11)."""
 )
-display(scorecard([comparison]).set_index("doc"))
-display(Markdown("Rows that are not a match:"))
-display(non_matches(comparison))
+R.table(non_matches(comparison), "Every row of `comparison.csv` that is not a match.", "comparison")
 
 # %% [markdown]
 # ## 1. The loop (eqs 1–7)
@@ -182,8 +193,9 @@ display(verdicts("eq 6"))
 # %% [markdown]
 # ## 2. The equivalent noise bandwidth (eqs 8–14) and Figures 2–3
 #
-# **One-sided or two-sided.** Eq 8 writes B_n = (1/2π)∫_{−∞}^{∞}|H(ω)|² dω; for a sampled loop
-# the band is |ω| ≤ π/T and |H|² is even, so this is twice (1/2π)∫_0^{π/T}|H|²dω = Σh²/(2T).
+# **One-sided or two-sided.** Eq 8 writes $B_n = \frac{1}{2\pi}\int_{-\infty}^{\infty}|H(\omega)|^2\,d\omega$;
+# for a sampled loop the band is |ω| ≤ π/T and |H|² is even, so this is twice
+# $\frac{1}{2\pi}\int_0^{\pi/T}|H|^2\,d\omega = \sum h^2/(2T)$.
 # The factor disappears between eqs 8 and 9 (z⁻¹dz = 2dw/(1 − w²) gives 1/(πT), eq 9 prints
 # 1/(2πT)), and eqs 9–14 are one-sided. `abglib.replications.huang.enbw_eq8_two_sided`
 # integrates eq 8 as printed (table below, column `eq8_two_sided`).
@@ -226,8 +238,8 @@ display(verdicts("eqs 8-13"))
 # (α = ξ), type II falls (ξ → 1 is deep smoothing, as the paper says).
 
 # %%
-display(Image(filename=figures["fig2"]))
-display(Image(filename=figures["fig3"]))
+R.figure("fig2", "Huang Figure 2 recomputed: type I, B<sub>n</sub>T against ξ for the α-β and α-β-γ loops (exact, closed forms, eq 13 as printed, printed table gains).")
+R.figure("fig3", "Huang Figure 3 recomputed: the same for type II (critically damped).")
 display(verdicts("Type II rule, xi"))
 
 # %% [markdown]
@@ -333,7 +345,7 @@ and σ ≤ {sigma_budget:g} m needs B_n ≤ {rep('Fig 4 text, ENBW limit'):.2f} 
 comparison rows below give both readings. Per-pulse noise of the simulations:
 σ_m = {metrics['sigma_measurement_m'].iloc[0]:.2f} m."""
 )
-display(Image(filename=figures["fig4"]))
+R.figure("fig4", "Huang Figure 4 recomputed: thermal-noise range error σ against the ENBW, printed formula (one-sided B<sub>n</sub>) and Barton's form (two-sided), with the 7 m budget.")
 display(verdicts("Fig 4"))
 display(verdicts("Tracking errors, ENBW"))
 
@@ -372,7 +384,7 @@ would be useless at the {sigma_budget:g} m budget; the gains of a true {abg10['e
 {abg10['settle_s']:.2f} s to the noise floor ({abg10['rms_settled']:.2f} m). The assumed
 discriminator edge is {gate:.1f} m."""
 )
-display(Image(filename=figures["fig5"]))
+R.figure("fig5", "Huang Figure 5 recomputed: error of the predicted range R − R<sub>p</sub> of the α-β and α-β-γ loops on the simulated accelerating target; thick: noise-free, thin: with noise.")
 display(metrics)
 display(verdicts("Fig 5"))
 
@@ -401,8 +413,8 @@ started on the target neither loses the track. A loss at low ENBW does happen wi
 observation. Started anywhere inside the gate (section 11), the stable loops keep the
 track."""
 )
-display(Image(filename=figures["fig6"]))
-display(Image(filename=figures["fig7"]))
+R.figure("fig6", "Huang Figure 6 recomputed: type I α-β-γ loops at the two ENBWs of the figure.")
+R.figure("fig7", "Huang Figure 7 recomputed: type II α-β-γ loops at the same ENBWs.")
 display(verdicts("Fig 6"))
 display(verdicts("Fig 7"))
 display(verdicts("Figs 6-7"))
@@ -472,7 +484,11 @@ md(
 verdict across every plausible value, {int((dep['robust'] == 'false').sum())} flip."""
 )
 display(dep[["item", "quantity", "verdict", "depends_on", "robust", "note"]])
-display(robustness)
+R.table(
+    robustness,
+    "Every point of every robustness sweep (`robustness.csv`), one group per claim.",
+    group_by=("key",),
+)
 
 # %% [markdown]
 # ## Provenance

@@ -41,23 +41,28 @@ tables = {
     )
 }
 provenance = None
+made_by = {}
+notebook = "workflow/notebooks/steelman1978.py"
 
 # %%
 import pandas as pd
-from IPython.display import Image, Markdown, display
+from IPython.display import Markdown, display
 
-from abglib.reporting.compare import non_matches, read_table, scorecard
+from abglib.reporting.compare import non_matches, read_table
+from abglib.reporting.notebook import Report
+
+R = Report(doc, figures, tables, made_by, notebook)
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 6)
-comparison = pd.read_csv(tables["comparison"], dtype={"published": str}, keep_default_na=False)
-robustness = pd.read_csv(tables["robustness"], dtype=str, keep_default_na=False)
-equations = read_table(tables["equations"])
-stability = pd.read_csv(tables["stability"])
-gains = pd.read_csv(tables["gains"])
-design_example = pd.read_csv(tables["design_example"]).set_index("route")
-t345 = pd.read_csv(tables["tables345"])
-approximations = pd.read_csv(tables["approximations"])
+comparison = R.read("comparison", dtype={"published": str}, keep_default_na=False)
+robustness = R.read("robustness", dtype=str, keep_default_na=False)
+equations = R.read("equations", reader=read_table)
+stability = R.read("stability")
+gains = R.read("gains")
+design_example = R.read("design_example").set_index("route")
+t345 = R.read("tables345")
+approximations = R.read("approximations")
 
 
 def verdicts(prefix):
@@ -91,6 +96,15 @@ wt3 = row("p. 8 design example, step 1", "3 dB down")
 t3_rows = [row(f"Table 3, α = {a}, exact") for a in (".1", ".3", ".488")]
 t3_low = [1 - num(r["published"]) / num(r["reproduced"]) for r in t3_rows]
 counts = comparison["verdict"].value_counts()
+
+# %%
+R.abstract(
+    """Steelman's α-β-γ frequency responses, Tables 1–2, the exact overshoots and every
+equation the text presents as exact (Simpson's eqs 11–20, the z-transforms 33–40, eqs 41
+and 50) reproduce to round-off. Morrison's variance factors as quoted are the one-step
+*prediction* VRFs, not the smoothed ones the text defines; the design example rests on a
+graph reading; the "very similar" curves of Figs 3–4 depend on how similar is similar."""
+)
 
 # %% [markdown]
 # ## Reading guide
@@ -163,7 +177,6 @@ say(
 # The scorecard of this document:
 
 # %%
-display(scorecard([comparison]).set_index("doc"))
 say(
     f"{len(comparison)} rows: "
     + ", ".join(
@@ -182,12 +195,16 @@ display(non_matches(comparison))
 # %%
 dep = comparison[comparison["depends_on"] != ""]
 display(dep[["item", "depends_on", "robust", "verdict", "note"]])
-display(robustness)
+R.table(
+    robustness,
+    "Every point of every robustness sweep (`robustness.csv`), one group per claim.",
+    group_by=("key",),
+)
 
 # %% [markdown]
 # ## 1. Figures 1–6
 #
-# The responses are those of eqs 36–39 with z = e^{jωT} (`abglib.analysis.frequency_response`),
+# The responses are those of eqs 36–39 with $z = e^{j\omega T}$ (`abglib.analysis.frequency_response`),
 # for the gains the figure captions and Tables 1–2 name. The scanned figures are lost (only
 # captions remain), so these plots are regenerated from the text's description; the Bode plots
 # show magnitude in dB against log ωT, the dashed line marks −3 dB (1/√2 on Fig. 1).
@@ -195,14 +212,22 @@ display(robustness)
 # term as T·V̄/X and plot it too.
 
 # %%
+captions = {  # the source's captions (config.yaml, steelman1978.figures)
+    "fig1": "|X̄/X| and phase of X̄/X, standard α-β-γ, α = .1, .3, .8, 1.0 (linear axes)",
+    "fig2": "Bode plot of X̄/X, standard α-β-γ, α = .1, .3, .488",
+    "fig3": "Bode plot of X_p/X (and X̄/X for comparison), standard α-β-γ, α = .3",
+    "fig4": "X̄/X, T V̄/X and 200 T² Ā/X, standard α-β-γ, α = .3",
+    "fig5": "QD vs standard α-β vs standard α-β-γ at α = .3 (Table 1 gains)",
+    "fig6": "QD (m = 21) vs standard α-β vs standard α-β-γ at α = .246 (Table 2 gains)",
+}
 for name in sorted(figures):
-    display(Markdown(f"**{name}**"))
-    display(Image(filename=figures[name]))
+    label = name.replace("fig", "Fig. ")
+    R.figure(name, f"Steelman {label} recomputed: {captions.get(name, 'see config.yaml')}.")
 
 # %% [markdown]
 # ## 2. Tables 1 and 2: the gains of Figures 5 and 6
 #
-# Standard α-β-γ: eqs 22–24 with θ = (1 − α)^{1/3}; standard α-β: α = 1 − θ², β = (1 − θ)²;
+# Standard α-β-γ: eqs 22–24 with $\theta = (1 - \alpha)^{1/3}$; standard α-β: α = 1 − θ², β = (1 − θ)²;
 # QD: eqs 28–30.
 
 # %%
@@ -299,7 +324,13 @@ display(summary)
 # Per gain set (all rows):
 
 # %%
-display(equations)
+R.table(
+    equations,
+    "Every evaluated case of every equation (all rows), one group per equation: open a group "
+    "to see its cases.",
+    group_by=("equation",),
+    group_min=3,
+)
 
 # %% [markdown]
 # ## 6. Stability criteria

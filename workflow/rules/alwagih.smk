@@ -131,6 +131,7 @@ rule alwagih_report:
         tables=report_tables("alwagih"),
     output:
         html=f"{REPORTS}/alwagih/index.html",
+        notebook=f"{REPORTS}/alwagih/notebook.py",
         figures=expand(
             f"{REPORTS}/alwagih/figures/{{f}}.png",
             f=REPORT_CONTENT["alwagih"]["figures"],
@@ -151,5 +152,6 @@ rule alwagih_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
+        page=lambda wildcards, input: REPORT_PAGE("alwagih", input),
     script:
         "../scripts/render_report.py"

@@ -102,6 +102,7 @@ rule antenna_report:
         tables=report_tables("antenna"),
     output:
         html=f"{REPORTS}/antenna/index.html",
+        notebook=f"{REPORTS}/antenna/notebook.py",
         figures=expand(
             f"{REPORTS}/antenna/figures/{{f}}.png",
             f=REPORT_CONTENT["antenna"]["figures"],
@@ -122,5 +123,6 @@ rule antenna_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
+        page=lambda wildcards, input: REPORT_PAGE("antenna", input),
     script:
         "../scripts/render_report.py"

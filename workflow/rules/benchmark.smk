@@ -217,6 +217,7 @@ rule benchmark_report:
         ],
     output:
         html=f"{REPORTS}/benchmark/index.html",
+        notebook=f"{REPORTS}/benchmark/notebook.py",
         figures=expand(
             f"{REPORTS}/benchmark/figures/{{f}}.png", f=["heatmap", "tradeoff"]
         ),
@@ -245,5 +246,6 @@ rule benchmark_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
+        page=lambda wildcards, input: REPORT_PAGE("benchmark", input),
     script:
         "../scripts/render_report.py"

@@ -103,6 +103,7 @@ rule faa_bendix_report:
         tables=report_tables("faa_bendix"),
     output:
         html=f"{REPORTS}/faa_bendix/index.html",
+        notebook=f"{REPORTS}/faa_bendix/notebook.py",
         figures=expand(
             f"{REPORTS}/faa_bendix/figures/{{f}}.png",
             f=REPORT_CONTENT["faa_bendix"]["figures"],
@@ -123,5 +124,6 @@ rule faa_bendix_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
+        page=lambda wildcards, input: REPORT_PAGE("faa_bendix", input),
     script:
         "../scripts/render_report.py"

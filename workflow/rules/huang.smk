@@ -101,6 +101,7 @@ rule huang_report:
         tables=report_tables("huang"),
     output:
         html=f"{REPORTS}/huang/index.html",
+        notebook=f"{REPORTS}/huang/notebook.py",
         figures=expand(
             f"{REPORTS}/huang/figures/{{f}}.png",
             f=REPORT_CONTENT["huang"]["figures"],
@@ -121,5 +122,6 @@ rule huang_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
+        page=lambda wildcards, input: REPORT_PAGE("huang", input),
     script:
         "../scripts/render_report.py"

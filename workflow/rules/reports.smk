@@ -1,19 +1,45 @@
+from functools import partial
+from hashlib import sha256
+
+from abglib.reporting.pipeline import report_page
+
 # The version's index page (CONTRACTS.md §4). Each document's report rule lives in the
 # document's own .smk file.
 
-# reports that replicate no source document, linked from the index under "Other reports"
+# reports that replicate no source document, listed on the index after the documents
 EXTRA_REPORTS = (
-    [
-        {
-            "title": "Benchmark matrix",
-            "href": "benchmark/index.html",
-            "description": "every configured tracker variant on every dataset scenario: "
-            "league tables, measured variance reduction against theory, peer libraries",
-        }
-    ]
+    [{"doc": "benchmark", "title": "Benchmark matrix", "href": "benchmark/index.html"}]
     if BENCH
     else []
 )
+# every report in the order of the index (its neighbours' links follow it)
+REPORT_ORDER = [*DOCS, *(["benchmark"] if BENCH else [])]
+REPORT_TITLES = {**DOC_TITLES, "benchmark": "Benchmark matrix"}
+
+
+# params of each <doc>_report rule: its neighbours and the rules behind its files
+REPORT_PAGE = partial(report_page, workflow, REPORT_ORDER, REPORT_TITLES)
+
+
+rule report_assets:
+    output:
+        css=f"{REPORTS}/assets/report.css",
+        js=f"{REPORTS}/assets/report.js",
+    log:
+        "logs/reports/assets.log",
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        code=code_of("render_assets.py"),
+        # the stylesheet and script themselves (not Python: hashed by content)
+        assets=sha256(
+            b"".join(
+                f.read_bytes()
+                for f in sorted((ABGLIB_DIR / "reporting/assets").glob("*"))
+            )
+        ).hexdigest(),
+    script:
+        "../scripts/render_assets.py"
 
 
 rule report_index:
@@ -21,6 +47,7 @@ rule report_index:
         scorecard="results/scorecard.csv",
         reports=expand(f"{REPORTS}/{{doc}}/index.html", doc=DOCS),
         others=bench_targets(),
+        assets=rules.report_assets.output,
     output:
         html=f"{REPORTS}/index.html",
         scorecard=f"{REPORTS}/scorecard.csv",
@@ -33,6 +60,7 @@ rule report_index:
         docs=DOCS,
         titles=DOC_TITLES,
         extras=EXTRA_REPORTS,
+        order=REPORT_ORDER,
         version=VERSION,
         repo=lambda wildcards, input: REPO,
     script:

@@ -116,6 +116,7 @@ rule steelman_report:
         tables=report_tables("steelman1978"),
     output:
         html=f"{REPORTS}/steelman1978/index.html",
+        notebook=f"{REPORTS}/steelman1978/notebook.py",
         figures=expand(
             f"{REPORTS}/steelman1978/figures/{{f}}.png",
             f=REPORT_CONTENT["steelman1978"]["figures"],
@@ -136,5 +137,6 @@ rule steelman_report:
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
+        page=lambda wildcards, input: REPORT_PAGE("steelman1978", input),
     script:
         "../scripts/render_report.py"

@@ -20,17 +20,18 @@ def copy_atomic(src, dst) -> None:
 
 def main(input, output, params, config, logger) -> None:
     from abglib.reporting import provenance
-    from abglib.reporting.render import render_notebook
+    from abglib.reporting.render import render_notebook, report_context
 
-    figures = {Path(p).stem: str(p) for p in input.figures}
-    tables = {Path(p).stem: str(p) for p in input.tables}
-    parameters = {
-        "doc": params.doc,
-        "version": params.version,
-        "figures": figures,
-        "tables": tables,
-        "provenance": provenance.collect(config, repo=params.repo),
-    }
+    parameters, page = report_context(
+        params.doc,
+        params.version,
+        input,
+        output,
+        repo=params.repo,
+        nav=params.page["nav"],
+        made_by=params.page["made_by"],
+        provenance=provenance.collect(config, repo=params.repo),
+    )
     render_notebook(
         input.notebook,
         output.html,
@@ -39,7 +40,9 @@ def main(input, output, params, config, logger) -> None:
         name=params.doc,
         timeout=params.timeout,
         log=logger.info,
+        page=page,
     )
+    copy_atomic(input.notebook, output.notebook)
     # a table the report shows but does not list as an output (wall-clock timings) stays
     # out of the report's tables folder, so the release's tables hold results only
     dests = {Path(p).name: p for p in [*output.figures, *output.tables]}

@@ -1,0 +1,232 @@
+"""What a report notebook calls to show its figures and tables (runs inside the kernel).
+
+``R = Report(doc, figures, tables, made_by)`` after the parameters cell, then
+
+- ``R.read(key, **kw)`` reads ``tables[key]`` (CSV) and remembers where it came from;
+- ``R.figure(key, caption)`` shows ``figures/<key>.png`` (linked, not embedded) as a
+  numbered figure with its alt text and the rule that made it;
+- ``R.table(df, caption)`` shows a numbered table (:func:`abglib.reporting.tables.table_html`);
+  every other ``display(df)`` goes through the same formatter (installed by ``Report``);
+- ``R.abstract(text)`` gives the report's short summary (markdown), which the page puts
+  under its title and the index page beside its link.
+
+Figures and tables are referenced relative to the report's own folder, where the report
+rule copies them (``figures/<key>.png``, ``tables/<key>.csv``).
+"""
+
+from __future__ import annotations
+
+import html
+import struct
+import zlib
+from collections.abc import Mapping
+from pathlib import Path
+
+import pandas as pd
+
+from .tables import GROUP_MIN, table_html
+
+__all__ = ["Report", "png_text"]
+
+_PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+
+
+def png_text(path) -> dict[str, str]:
+    """The text chunks (``tEXt``, ``zTXt``, ``iTXt``) of a PNG file as ``{keyword: text}``.
+
+    Stops at the first ``IDAT`` chunk: metadata written by matplotlib comes before the
+    image data.
+
+    Raises
+    ------
+    ValueError
+        If ``path`` is not a PNG file.
+    """
+    data = Path(path).read_bytes()
+    if not data.startswith(_PNG_SIGNATURE):
+        raise ValueError(f"{path} is not a PNG file (no PNG signature)")
+    out, pos = {}, len(_PNG_SIGNATURE)
+    while pos + 8 <= len(data):
+        (length,) = struct.unpack(">I", data[pos : pos + 4])
+        kind = data[pos + 4 : pos + 8]
+        body = data[pos + 8 : pos + 8 + length]
+        pos += 12 + length
+        if kind == b"IDAT" or kind == b"IEND":
+            break
+        if kind == b"tEXt":
+            key, _, text = body.partition(b"\0")
+            out[key.decode("latin-1")] = text.decode("latin-1")
+        elif kind == b"zTXt":
+            key, _, rest = body.partition(b"\0")
+            out[key.decode("latin-1")] = zlib.decompress(rest[1:]).decode("latin-1")
+        elif kind == b"iTXt":
+            key, _, rest = body.partition(b"\0")
+            compressed, rest = rest[0], rest[2:]
+            _lang, _, rest = rest.partition(b"\0")
+            _translated, _, text = rest.partition(b"\0")
+            out[key.decode("latin-1")] = (zlib.decompress(text) if compressed else text).decode()
+    return out
+
+
+def _plain(markdown: str) -> str:
+    """Caption text without markdown markup, for an alt attribute."""
+    for ch in ("*", "`", "$"):
+        markdown = markdown.replace(ch, "")
+    return " ".join(markdown.split())
+
+
+def _caption(markdown: str) -> str:
+    from .page import markdown_html
+
+    return markdown_html(markdown, inline=True) if markdown else ""
+
+
+class Report:
+    """Numbered figures and tables of one report, with where each came from.
+
+    Parameters
+    ----------
+    doc : str
+        Document key (the report's folder name).
+    figures, tables : mapping
+        ``{key: path}`` of the figures (PNG) and tables (CSV) the pipeline passed in.
+    made_by : mapping, optional
+        ``{file name: (rule, script)}``: the rule that wrote each figure or table and its
+        script, shown under each caption.
+    notebook : str
+        The notebook's path in the repository (shown for tables computed in the notebook).
+    install : bool
+        Install :meth:`table` as the HTML formatter of every DataFrame displayed.
+    """
+
+    def __init__(
+        self,
+        doc: str,
+        figures: Mapping[str, str],
+        tables: Mapping[str, str],
+        made_by: Mapping | None = None,
+        notebook: str | None = None,
+        install: bool = True,
+    ):
+        self.doc = doc
+        self.figures = dict(figures)
+        self.tables = dict(tables)
+        self.made_by = {k: tuple(v) for k, v in (made_by or {}).items()}
+        self.notebook = notebook or f"workflow/notebooks/{doc}.py"
+        self.n_figures = 0
+        self.n_tables = 0
+        if install:
+            self._install()
+
+    # -- provenance -------------------------------------------------------------------
+    def _rule(self, filename: str) -> str:
+        rule = self.made_by.get(filename)
+        if not rule:
+            return ""
+        name, script = rule
+        where = f" (<code>{html.escape(script)}</code>)" if script else ""
+        return f"made by rule <code>{html.escape(name)}</code>{where}"
+
+    def _table_source(self, key: str | None) -> str:
+        if key is None or key not in self.tables:
+            return (
+                "Computed for this page by the report's notebook "
+                f'(<a href="notebook.py"><code>{html.escape(self.notebook)}</code></a>).'
+            )
+        name = Path(self.tables[key]).name
+        rule = self._rule(name)
+        link = f'<a href="tables/{html.escape(name)}">tables/{html.escape(name)}</a>'
+        return f"From {link}{', ' + rule if rule else ''}."
+
+    # -- reading ------------------------------------------------------------------------
+    def read(self, key: str, reader=None, **kwargs) -> pd.DataFrame:
+        """Read ``tables[key]`` with ``reader`` (default ``pandas.read_csv``) and tag it
+        with its source (``df.attrs["source"]``, kept by pandas through most operations)."""
+        if key not in self.tables:
+            raise KeyError(
+                f"table {key!r} is not an input of this report; have {sorted(self.tables)}"
+            )
+        df = (reader or pd.read_csv)(self.tables[key], **kwargs)
+        df.attrs["source"] = key
+        return df
+
+    # -- showing ------------------------------------------------------------------------
+    def table_markup(
+        self,
+        df: pd.DataFrame,
+        caption: str | None = None,
+        source: str | None = None,
+        group_by: tuple = (),
+        group_min: int = GROUP_MIN,
+    ) -> str:
+        """The HTML of a numbered table (the next number)."""
+        self.n_tables += 1
+        key = source if source is not None else df.attrs.get("source")
+        return table_html(
+            df,
+            caption=_caption(caption or df.attrs.get("caption") or ""),
+            number=self.n_tables,
+            source=self._table_source(key),
+            attrs={"id": f"tab-{self.n_tables}"},
+            group_by=group_by,
+            group_min=group_min,
+        )
+
+    def table(
+        self,
+        df: pd.DataFrame,
+        caption: str | None = None,
+        source: str | None = None,
+        group_by: tuple = (),
+        group_min: int = GROUP_MIN,
+    ) -> None:
+        """Display ``df`` as a numbered table with ``caption`` and its source; ``group_by``
+        collapses runs of rows sharing those columns' values (see ``table_html``)."""
+        from IPython.display import HTML, display
+
+        display(HTML(self.table_markup(df, caption, source, group_by, group_min)))
+
+    def figure(self, key: str, caption: str = "", alt: str | None = None) -> None:
+        """Display ``figures/<key>.png`` as a numbered figure.
+
+        The alt text is, in order: ``alt``; the PNG's ``Description`` text chunk (written
+        by the figure's script); the caption.
+        """
+        from IPython.display import HTML, display
+
+        if key not in self.figures:
+            raise KeyError(
+                f"figure {key!r} is not an input of this report; have {sorted(self.figures)}"
+            )
+        path = Path(self.figures[key])
+        self.n_figures += 1
+        n = self.n_figures
+        if alt is None:
+            alt = png_text(path).get("Description") or _plain(caption) or f"Figure {n}"
+        name = html.escape(path.name)
+        rule = self._rule(path.name)
+        made = f' <span class="made-by">{rule[0].upper() + rule[1:]}.</span>' if rule else ""
+        display(
+            HTML(
+                f'<figure class="abg-figure" id="fig-{n}">'
+                f'<a href="figures/{name}"><img src="figures/{name}" alt="{html.escape(alt)}"'
+                ' loading="lazy"></a>'
+                f"<figcaption><b>Figure {n}.</b> {_caption(caption)}{made}</figcaption></figure>"
+            )
+        )
+
+    def abstract(self, text: str) -> None:
+        """The report's short summary (markdown); the page lifts it under the title."""
+        from IPython.display import display
+
+        display({"text/markdown": text, "text/plain": text}, raw=True, metadata={"abstract": True})
+
+    def _install(self) -> None:
+        try:
+            from IPython import get_ipython
+        except ImportError:  # pragma: no cover - IPython comes with ipykernel
+            return
+        ip = get_ipython()
+        if ip is None:
+            return
+        ip.display_formatter.formatters["text/html"].for_type(pd.DataFrame, self.table_markup)
