@@ -10,7 +10,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from abglib.reporting.notebook import Report, png_text
+from abglib.reporting.notebook import Report
 from abglib.reporting.page import (
     build_page,
     index_page,
@@ -20,6 +20,7 @@ from abglib.reporting.page import (
     read_headline,
     verdict_bar,
 )
+from abglib.reporting.pngmeta import png_description
 from abglib.reporting.render import verdict_counts, write_assets
 from abglib.reporting.tables import cell_strings, group_runs, section_of, table_html
 
@@ -128,7 +129,7 @@ def _png(chunks):
     return out + chunk(b"IDAT", zlib.compress(b"\0\0")) + chunk(b"IEND", b"")
 
 
-def test_png_text_reads_text_ztxt_and_itxt(tmp_path):
+def test_png_description_reads_text_ztxt_and_itxt(tmp_path):
     p = tmp_path / "f.png"
     p.write_bytes(
         _png(
@@ -139,17 +140,28 @@ def test_png_text_reads_text_ztxt_and_itxt(tmp_path):
             ]
         )
     )
-    assert png_text(p) == {
-        "Description": "Bode plot of X/X, alpha = .3",
-        "Comment": "compressed words",
-        "Title": "α-β tracker",
-    }
+    assert png_description(p) == "Bode plot of X/X, alpha = .3"
+    q = tmp_path / "g.png"
+    q.write_bytes(
+        _png(
+            [
+                (b"zTXt", b"Description\0\0" + zlib.compress(b"compressed words")),
+                (b"iTXt", b"Title\0\0\0en\0Titel\0other"),
+            ]
+        )
+    )
+    assert png_description(q) == "compressed words"
+    r = tmp_path / "h.png"
+    r.write_bytes(_png([(b"iTXt", b"Description\0\0\0en\0Titel\0\xce\xb1-\xce\xb2 tracker")]))
+    assert png_description(r) == "α-β tracker"
+    (tmp_path / "i.png").write_bytes(_png([]))
+    assert png_description(tmp_path / "i.png") == ""
     (tmp_path / "x.png").write_bytes(b"GIF89a")
     with pytest.raises(ValueError, match="not a PNG"):
-        png_text(tmp_path / "x.png")
+        png_description(tmp_path / "x.png")
 
 
-def test_png_text_reads_what_matplotlib_writes(tmp_path):
+def test_png_description_reads_what_matplotlib_writes(tmp_path):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -158,7 +170,7 @@ def test_png_text_reads_what_matplotlib_writes(tmp_path):
     fig = plt.figure(figsize=(1, 1))
     fig.savefig(tmp_path / "m.png", metadata={"Description": "a line", "Software": None})
     plt.close(fig)
-    assert png_text(tmp_path / "m.png") == {"Description": "a line"}
+    assert png_description(tmp_path / "m.png") == "a line"
 
 
 def test_report_figure_uses_the_png_description_and_names_its_rule(tmp_path, monkeypatch):

@@ -17,55 +17,15 @@ rule copies them (``figures/<key>.png``, ``tables/<key>.csv``).
 from __future__ import annotations
 
 import html
-import struct
-import zlib
 from collections.abc import Mapping
 from pathlib import Path
 
 import pandas as pd
 
+from .pngmeta import png_description
 from .tables import GROUP_MIN, table_html
 
-__all__ = ["Report", "png_text"]
-
-_PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
-
-
-def png_text(path) -> dict[str, str]:
-    """The text chunks (``tEXt``, ``zTXt``, ``iTXt``) of a PNG file as ``{keyword: text}``.
-
-    Stops at the first ``IDAT`` chunk: metadata written by matplotlib comes before the
-    image data.
-
-    Raises
-    ------
-    ValueError
-        If ``path`` is not a PNG file.
-    """
-    data = Path(path).read_bytes()
-    if not data.startswith(_PNG_SIGNATURE):
-        raise ValueError(f"{path} is not a PNG file (no PNG signature)")
-    out, pos = {}, len(_PNG_SIGNATURE)
-    while pos + 8 <= len(data):
-        (length,) = struct.unpack(">I", data[pos : pos + 4])
-        kind = data[pos + 4 : pos + 8]
-        body = data[pos + 8 : pos + 8 + length]
-        pos += 12 + length
-        if kind == b"IDAT" or kind == b"IEND":
-            break
-        if kind == b"tEXt":
-            key, _, text = body.partition(b"\0")
-            out[key.decode("latin-1")] = text.decode("latin-1")
-        elif kind == b"zTXt":
-            key, _, rest = body.partition(b"\0")
-            out[key.decode("latin-1")] = zlib.decompress(rest[1:]).decode("latin-1")
-        elif kind == b"iTXt":
-            key, _, rest = body.partition(b"\0")
-            compressed, rest = rest[0], rest[2:]
-            _lang, _, rest = rest.partition(b"\0")
-            _translated, _, text = rest.partition(b"\0")
-            out[key.decode("latin-1")] = (zlib.decompress(text) if compressed else text).decode()
-    return out
+__all__ = ["Report"]
 
 
 def _plain(markdown: str) -> str:
@@ -202,7 +162,7 @@ class Report:
         self.n_figures += 1
         n = self.n_figures
         if alt is None:
-            alt = png_text(path).get("Description") or _plain(caption) or f"Figure {n}"
+            alt = png_description(path) or _plain(caption) or f"Figure {n}"
         name = html.escape(path.name)
         rule = self._rule(path.name)
         made = f' <span class="made-by">{rule[0].upper() + rule[1:]}.</span>' if rule else ""

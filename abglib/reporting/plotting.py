@@ -23,10 +23,7 @@ from __future__ import annotations
 import functools
 import io
 import re
-import struct
-import zlib
 from collections.abc import Iterable
-from pathlib import Path
 
 import matplotlib
 
@@ -37,6 +34,8 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 from matplotlib.colors import to_rgb  # noqa: E402
 from matplotlib.transforms import Bbox  # noqa: E402
+
+from .pngmeta import png_description  # noqa: E402  (re-exported)
 
 __all__ = [
     "DPI",
@@ -225,8 +224,7 @@ def suptitle(fig, text: str, **kwargs):
 # ------------------------------------------------------------------ legends, overlaps
 
 
-def legend_outside(where, handles=None, labels=None, side: str = "right", ncol: int = 1,
-                   **kwargs):
+def legend_outside(where, handles=None, labels=None, side: str = "right", ncol: int = 1, **kwargs):
     """A legend outside the data area of ``where`` (an Axes or a Figure).
 
     ``side``: ``'right'`` (beside the axes, top-aligned), ``'top'`` (above the axes or, for
@@ -248,8 +246,9 @@ def legend_outside(where, handles=None, labels=None, side: str = "right", ncol: 
             "top": ("lower left", (0.0, 1.02)),
             "bottom": ("upper left", (0.0, -0.18)),
         }[side]
-        return where.legend(handles, labels, loc=loc, bbox_to_anchor=anchor, ncol=ncol,
-                            borderaxespad=0.0, **kwargs)
+        return where.legend(
+            handles, labels, loc=loc, bbox_to_anchor=anchor, ncol=ncol, borderaxespad=0.0, **kwargs
+        )
     if side == "top":  # above the first axes: a figure legend would run into the title
         return legend_outside(where.axes[0], handles, labels, "top", ncol, **kwargs)
     loc = {"right": "outside right upper", "bottom": "outside lower center"}[side]
@@ -312,8 +311,14 @@ def _hits(kind, obj, box: Bbox) -> bool:
         return len(obj.vertices) > 1 and obj.intersects_bbox(box, filled=True)
     if kind == "points":
         v = obj[np.all(np.isfinite(obj), axis=1)]
-        return bool(np.any((v[:, 0] >= box.x0) & (v[:, 0] <= box.x1)
-                           & (v[:, 1] >= box.y0) & (v[:, 1] <= box.y1)))
+        return bool(
+            np.any(
+                (v[:, 0] >= box.x0)
+                & (v[:, 0] <= box.x1)
+                & (v[:, 1] >= box.y0)
+                & (v[:, 1] <= box.y1)
+            )
+        )
     return box.overlaps(obj) and obj.width > 0 and obj.height > 0
 
 
@@ -426,48 +431,13 @@ def save_figure(fig, path, alt: str | None = None, *, dpi: int = DPI) -> None:
         fig.savefig(buf, dpi=dpi, format="png", metadata={"Software": None})
         buf.seek(0)
         img = Image.open(buf).convert("RGB")
-        img = img.quantize(colors=256, method=Image.Quantize.MEDIANCUT,
-                           dither=Image.Dither.NONE)
+        img = img.quantize(colors=256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
         info = PngImagePlugin.PngInfo()
         info.add_text("Description", alt)  # Pillow writes iTXt if not Latin-1
         with atomic_output(path) as tmp:
             img.save(tmp, format="png", pnginfo=info, optimize=True)
     finally:
         plt.close(fig)
-
-
-def png_description(path) -> str:
-    """The ``Description`` text of a PNG (``tEXt``, ``zTXt`` or ``iTXt``), '' if none.
-
-    Standard library only (the report renderer reads it to set ``<img alt>``).
-    """
-    data = Path(path).read_bytes()
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        raise ValueError(f"{path}: not a PNG file")
-    pos = 8
-    while pos + 8 <= len(data):
-        length, ctype = struct.unpack(">I4s", data[pos : pos + 8])
-        body = data[pos + 8 : pos + 8 + length]
-        pos += 12 + length
-        if ctype == b"IEND":
-            break
-        if ctype not in (b"tEXt", b"zTXt", b"iTXt"):
-            continue
-        key, _, rest = body.partition(b"\x00")
-        if key != b"Description":
-            continue
-        if ctype == b"tEXt":
-            return rest.decode("latin-1")
-        if ctype == b"zTXt":
-            return zlib.decompress(rest[1:]).decode("latin-1")
-        compressed, rest = rest[0], rest[2:]
-        _lang, _, rest = rest.partition(b"\x00")
-        _translated, _, text = rest.partition(b"\x00")
-        return (zlib.decompress(text) if compressed else text).decode("utf-8")
-    return ""
-
-
-# ------------------------------------------------------------------ frequency responses
 
 
 def _fmt(x: float) -> str:

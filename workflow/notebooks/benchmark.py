@@ -212,8 +212,8 @@ R.figure(
 # The RMS of the noise part and of the lag part of the smoothed-position error. Each design
 # family is swept over its design parameter (`benchmark.tradeoff_families`, table
 # `tradeoff_curves.csv`): along a curve lighter smoothing trades lag for noise; a family
-# whose curve lies lower-left dominates on that scenario. Crosses are the configured
-# variants of the league table.
+# whose curve lies lower-left dominates on that scenario. The configured variants of the
+# league table are markers, one shape per variant in its family's colour, named in the legend.
 #
 # At the heavy-smoothing end (small α, small tracking index, long QD memory) the noise part
 # rises again: the two-point start-up takes its velocity from two noisy samples (variance

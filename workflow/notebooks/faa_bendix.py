@@ -188,7 +188,8 @@ display(robustness.pivot_table(index="key", columns="value", values="verdict", a
 # smoothed velocity XD(KB), predicted position XP(K) (the prediction for sample k made before
 # sample k arrived). The y grid is drawn every SFY, the captions' scale factor, so that a
 # reader can hold the panels against the originals. Solid with dots: the captions' two-digit
-# gains; dashed: the memo's three-digit gains.
+# gains; dashed and lighter: the memo's three-digit gains; each row's gains are printed at its
+# right (captions | memo).
 
 # %%
 display(verdicts("Purpose"))
@@ -196,7 +197,8 @@ display(verdicts("Operation"))
 R.figure(
     "impulse",
     "The test program's impulse responses recomputed for every gain set: solid with dots, "
-    "the captions' two-digit gains; dashed, the memo's three-digit gains.",
+    "the captions' two-digit gains; dashed and lighter, the memo's three-digit gains; each "
+    "row's gains at its right (captions | memo).",
 )
 R.figure("ramp", "The test program's ramp responses recomputed (same key).")
 

@@ -358,8 +358,9 @@ display(verdicts("Tracking errors, ENBW"))
 # with zero acceleration (the paper does not say how it initialises; this isolates the
 # response to the unknown acceleration; a start without the range rate, and a start off the
 # range by up to the gate's half-width, either side, are swept in section 11). Plotted:
-# the error of the *predicted* position R − R_p (the output of the paper's H(z)); thick =
-# noise-free run, thin = with noise.
+# the error of the *predicted* position R − R_p (the output of the paper's H(z)); each row
+# shows the noise-free run on the left, on its own scale, and the run with noise on the
+# right, with the noise-free curve drawn over it.
 #
 # **Definitions.** *Steady-state error*: the final-value lag A T²/β of the predicted
 # position. In the simulation the acceleration keeps changing, so the α-β error is a drifting
@@ -384,7 +385,7 @@ would be useless at the {sigma_budget:g} m budget; the gains of a true {abg10['e
 {abg10['settle_s']:.2f} s to the noise floor ({abg10['rms_settled']:.2f} m). The assumed
 discriminator edge is {gate:.1f} m."""
 )
-R.figure("fig5", "Huang Figure 5 recomputed: error of the predicted range R − R<sub>p</sub> of the α-β and α-β-γ loops on the simulated accelerating target; thick: noise-free, thin: with noise.")
+R.figure("fig5", "Huang Figure 5 recomputed: error of the predicted range R − R<sub>p</sub> of the α-β and α-β-γ loops on the simulated accelerating target; left: noise-free, on its own scale; right: with noise, the noise-free curve on top.")
 display(metrics)
 display(verdicts("Fig 5"))
 
