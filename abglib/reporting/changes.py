@@ -321,8 +321,8 @@ def diff_folders(old, new) -> Changes:
 
 
 def _label(folder: Path) -> str:
-    name = folder.resolve().name
-    return name if re.fullmatch(r"v\d+(\.\d+)*", name) else str(folder)
+    """The folder's name (``v0.3.0``): pages never carry an absolute path."""
+    return folder.resolve().name
 
 
 def _version(name: str) -> tuple[int, ...] | None:
@@ -356,6 +356,12 @@ td.note { overflow-wrap: anywhere; } td.item { min-width: 12em; }
 .wrap { overflow-x: auto; }
 .k-verdict { background: #fde2b8; } .k-moved { background: #fff4c2; }
 .k-added { background: #d9f2d9; } .k-removed { background: #f6d2d2; }
+tr.k-verdict, tr.k-moved, tr.k-added, tr.k-removed { background: none; }
+tr.k-verdict > td:first-child { border-left: .5em solid #e8a33d; }
+tr.k-moved > td:first-child { border-left: .5em solid #e6c84a; }
+tr.k-added > td:first-child { border-left: .5em solid #6cbf6c; }
+tr.k-removed > td:first-child { border-left: .5em solid #d46a6a; }
+summary { padding-left: .3em; border-radius: .2em; }
 .v { padding: 0 .3em; border-radius: .2em; white-space: nowrap; }
 .v-match { background: #cdebcd; } .v-mismatch { background: #f3c4c4; }
 .v-explained { background: #cfe0f5; } .v-not_reproducible { background: #e2e2e2; }
