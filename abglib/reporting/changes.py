@@ -58,6 +58,7 @@ __all__ = [
     "diff_tables",
     "match_rows",
     "previous_version",
+    "write_build_changes",
     "write_changes",
 ]
 
@@ -320,6 +321,31 @@ def diff_folders(old, new) -> Changes:
     return diff_tables(a, b, _label(old), _label(new))
 
 
+def write_build_changes(
+    tables: Mapping[str, str], previous, version: str, csv_path, html_path, releases="reports"
+) -> Changes | None:
+    """The pipeline's ``changes`` rule: a build's comparison tables ``{doc: path}`` against
+    the previous version folder (None: write the page saying there is none).
+
+    Only the documents the build has are compared: a build of some documents does not
+    report the others as removed (the page names them).
+    """
+    if previous is None:
+        write_changes(None, csv_path, html_path, version=version, releases=releases)
+        return None
+    previous = Path(previous)
+    old_all = comparison_tables(previous)
+    old = {d: p for d, p in old_all.items() if d in tables}
+    ch = diff_tables(old, {d: Path(p) for d, p in tables.items()}, previous.name, f"v{version}")
+    skipped = sorted(set(old_all) - set(tables))
+    if skipped:
+        ch.remarks.setdefault("(build)", []).append(
+            f"documents of {previous.name} not in this build, not compared: {', '.join(skipped)}"
+        )
+    write_changes(ch, csv_path, html_path, {d: f"{d}/index.html" for d in tables})
+    return ch
+
+
 def _label(folder: Path) -> str:
     """The folder's name (``v0.3.0``): pages never carry an absolute path."""
     return folder.resolve().name
@@ -428,7 +454,7 @@ def changes_html(ch: Changes, links: Mapping[str, str] | None = None) -> str:
         f"<tr><th>document</th><th>rows in {esc(ch.old)}</th><th>rows in {esc(ch.new)}</th>"
         f"{head}</tr>{''.join(rows)}</table></div>"
     )
-    sections = []
+    sections = [f"<p>{esc(r)}.</p>" for r in ch.remarks.get("(build)", [])]
     for doc in ch.docs:
         sub = ch.table[ch.table["doc"] == doc]
         link = f' (<a href="{esc(links[doc])}">report</a>)' if doc in links else ""
