@@ -100,7 +100,8 @@ def _bad(port: int) -> str:
     return f"""<!DOCTYPE html><html><head><meta charset="utf-8">
 <script src="http://127.0.0.1:{port}/cdn/mathjax.js"></script>
 <link rel="stylesheet" href="missing.css"></head>
-<body><p>Raw: $$\\frac{{a}}{{b}}$$ and \\(x\\)</p>
+<body><p>Raw: $$\\frac{{a}}{{b}}$$ and \\(x\\), e^{{jωT}}</p>
+<pre>code may write f"x_{{o}}" and x**{{2}}</pre>
 <table><tr><td>NaN</td><td>1.0</td></tr><tr><td>2</td><td>nan NaN</td></tr></table>
 <img src="figures/absent.png" alt="gone">
 <div style="width:3000px">wide</div>
@@ -153,7 +154,8 @@ def test_every_defect_is_caught_and_nothing_leaves_the_browser(browser, tmp_path
     assert c.broken_images == ["figures/absent.png"]
     assert any("boom" in e for e in c.console_errors)
     assert any("uncaught here" in e for e in c.console_errors)
-    assert [r.split(" ")[0] for r in c.raw_tex] == ["$$", "\\frac", "\\("]
+    # each raw pattern once; "_{" only in the code block, which is not prose
+    assert [r.split(" ")[0] for r in c.raw_tex] == ["$$", "\\frac", "\\(", "$\\", "^{"]
     assert c.nan_cells == 2 and c.nan_examples == ["NaN", "nan NaN"]
     assert c.overflow > 1500
     assert len(c.problems) >= 8

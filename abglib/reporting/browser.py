@@ -40,8 +40,8 @@ __all__ = [
 
 #: Viewport of every check (CSS pixels): a laptop screen.
 VIEWPORT = (1280, 900)
-#: Screenshots of taller pages are cut at this height (Chromium's limit is 16384 px per
-#: side for one capture); the page height is recorded whole.
+#: Screenshots of taller pages are cut into tiles of this height (Chromium's limit is
+#: 16384 px per side for one capture).
 MAX_SCREENSHOT_HEIGHT = 16000
 
 _FLAGS = [
@@ -275,17 +275,40 @@ class PageCheck:
         return out
 
 
-# raw TeX a reader must never see: display math, a fraction, inline-math delimiters
+#: Raw TeX a reader must never see anywhere in the visible text: display math, a fraction,
+#: math delimiters.
 RAW_TEX = ("$$", "\\frac", "\\(", "\\[")
+#: Raw TeX that is wrong in visible prose (outside code, where Python has the same
+#: characters): a dollar before a command (``$\\alpha``), and super- or subscripts in
+#: braces written outside any math (``e^{jωT}``, ``∫_{−∞}``).
+RAW_TEX_PROSE = ("$\\", "^{", "_{")
 
 _INSPECT = r"""
 (() => {
   const text = document.body ? document.body.innerText : "";
-  const raw = [];
-  for (const pat of %s) {
-    let i = text.indexOf(pat);
-    if (i >= 0) raw.push(pat + " … " + JSON.stringify(text.slice(Math.max(0, i - 40), i + 60)));
+  // visible prose: text nodes that are rendered and not inside code or typeset math
+  const skip = "code, pre, kbd, samp, script, style, textarea, mjx-container, .MathJax, .katex";
+  const walker = document.createTreeWalker(document.body || document.documentElement,
+                                           NodeFilter.SHOW_TEXT);
+  const parts = [];
+  for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+    const el = n.parentElement;
+    if (!el || el.closest(skip)) continue;
+    if (el.checkVisibility && !el.checkVisibility({visibilityProperty: true})) continue;
+    parts.push(n.nodeValue);
   }
+  const prose = parts.join(" ");
+  const raw = [];
+  const find = (pats, t) => {
+    for (const pat of pats) {
+      const i = t.indexOf(pat);
+      if (i < 0) continue;
+      const n = t.split(pat).length - 1;
+      raw.push(pat + " (" + n + "×) … " + JSON.stringify(t.slice(Math.max(0, i - 40), i + 60)));
+    }
+  };
+  find(%s, text);
+  find(%s, prose);
   const cells = [...document.querySelectorAll("td, th")]
     .filter(c => /(^|[^A-Za-z])NaN([^A-Za-z]|$)/.test(c.textContent));
   const broken = [...document.images]
@@ -314,7 +337,8 @@ new Promise(resolve => {
 def check_page(browser: Browser, path, screenshot=None, timeout: float = 60.0) -> PageCheck:
     """Load the HTML file ``path`` offline and check it (see :class:`PageCheck`).
 
-    ``screenshot``: a path for a full-page PNG (cut at :data:`MAX_SCREENSHOT_HEIGHT`).
+    ``screenshot``: a path for a full-page PNG (tiles ``<stem>-<n>.png`` for a page
+    taller than :data:`MAX_SCREENSHOT_HEIGHT`; :attr:`PageCheck.screenshot` lists them).
     """
     url = Path(path).resolve().as_uri()
     res = PageCheck(url)
@@ -395,15 +419,16 @@ def check_page(browser: Browser, path, screenshot=None, timeout: float = 60.0) -
             res.console_errors.append(f"the page did not finish loading within {timeout} s")
         _evaluate(browser, session, _SETTLE)
         browser.pump(0.3)
-        info = _evaluate(browser, session, _INSPECT % json.dumps(list(RAW_TEX)))
+        pats = (json.dumps(list(RAW_TEX)), json.dumps(list(RAW_TEX_PROSE)))
+        info = _evaluate(browser, session, _INSPECT % pats)
         res.raw_tex = info["raw"]
         res.nan_cells, res.nan_examples = info["nan"], info["nanEx"]
         res.broken_images = info["broken"]
         res.width, res.height = info["width"], info["height"]
         res.overflow = max(0, info["scrollWidth"] - info["width"])
         if screenshot is not None:
-            res.screenshot = str(screenshot)
-            _screenshot(browser, session, screenshot, res.height)
+            shots = _screenshot(browser, session, screenshot, res.height)
+            res.screenshot = " ".join(str(p) for p in shots)
     finally:
         browser.on_event = old_handler
         try:
@@ -425,20 +450,28 @@ def _evaluate(browser: Browser, session: str, expr: str) -> dict:
     return out["result"].get("value")
 
 
-def _screenshot(browser: Browser, session: str, path, height: int) -> None:
-    h = max(1, min(int(height), MAX_SCREENSHOT_HEIGHT))
-    shot = browser.send(
-        "Page.captureScreenshot",
-        {
-            "format": "png",
-            "captureBeyondViewport": True,
-            "clip": {"x": 0, "y": 0, "width": VIEWPORT[0], "height": h, "scale": 1},
-        },
-        session,
-        timeout=120,
-    )
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    Path(path).write_bytes(base64.b64decode(shot["data"]))
+def _screenshot(browser: Browser, session: str, path, height: int) -> list[Path]:
+    """Full-page PNG at ``path``; a page taller than :data:`MAX_SCREENSHOT_HEIGHT` is cut
+    into tiles ``<stem>-1.png``, ``<stem>-2.png``, ... from the top (one capture holds at
+    most 16384 px a side). Returns the files written."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    height = max(1, int(height))
+    tiles = range(0, height, MAX_SCREENSHOT_HEIGHT)
+    written = []
+    for n, top in enumerate(tiles, start=1):
+        h = min(MAX_SCREENSHOT_HEIGHT, height - top)
+        clip = {"x": 0, "y": top, "width": VIEWPORT[0], "height": h, "scale": 1}
+        shot = browser.send(
+            "Page.captureScreenshot",
+            {"format": "png", "captureBeyondViewport": True, "clip": clip},
+            session,
+            timeout=120,
+        )
+        out = path if len(tiles) == 1 else path.with_name(f"{path.stem}-{n}{path.suffix}")
+        out.write_bytes(base64.b64decode(shot["data"]))
+        written.append(out)
+    return written
 
 
 def report_pages(folder) -> list[Path]:
