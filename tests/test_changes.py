@@ -228,3 +228,23 @@ def test_real_v020_to_v030_lists_the_replication_layer_verdict_changes():
     for doc in ("alwagih", "antenna", "faa_bendix", "huang", "steelman1978"):
         n_old, n_new = ch.rows[doc]
         assert (t[(t["doc"] == doc) & (t["change"] == "added")].shape[0]) == n_new - n_old
+
+
+def test_a_build_is_compared_on_its_own_documents(tmp_path):
+    """The pipeline's rule: a build of some documents does not report the others removed;
+    without a previous version the page says so."""
+    from abglib.reporting.changes import write_build_changes
+
+    prev = _version(tmp_path / "reports" / "v0.1.0", {"d": OLD, "other": OLD})
+    built = tmp_path / "results" / "d" / "comparison.csv"
+    built.parent.mkdir(parents=True)
+    built.write_text(NEW, encoding="utf-8")
+    out = tmp_path / "out"
+    ch = write_build_changes({"d": str(built)}, prev, "0.2.0", out / "c.csv", out / "c.html")
+    assert ch.docs == ["d"] and len(ch.table) == 7
+    page = (out / "c.html").read_text(encoding="utf-8")
+    assert "documents of v0.1.0 not in this build, not compared: other" in page
+    assert "What changed: v0.2.0 against v0.1.0" in page
+    none = write_build_changes({"d": str(built)}, None, "0.2.0", out / "n.csv", out / "n.html")
+    assert none is None
+    assert "nothing to compare with" in (out / "n.html").read_text(encoding="utf-8")

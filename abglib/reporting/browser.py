@@ -101,6 +101,7 @@ class Browser:
         self._id = 0
         self._buf = b""
         self._profile = tempfile.TemporaryDirectory(prefix="abglib-chromium-")
+        self._log = open(Path(self._profile.name) / "stderr.log", "wb")  # noqa: SIM115
         # fds 3 (Chromium reads) and 4 (Chromium writes) in the child
         to_child_r, self._to_child = os.pipe()
         self._from_child, from_child_w = os.pipe()
@@ -123,7 +124,8 @@ class Browser:
             args,
             stdin=subprocess.DEVNULL,
             stdout=subprocess.DEVNULL,
-            stderr=subprocess.PIPE,
+            # a file, not a pipe: a pipe nobody reads would fill and stall Chromium
+            stderr=self._log,
             pass_fds=(3, 4),
             preexec_fn=_fds,
         )
@@ -165,9 +167,11 @@ class Browser:
         return json.loads(msg)
 
     def _stderr(self) -> str:
-        if self.proc.poll() is None or self.proc.stderr is None:
-            return "(still running)"
-        return self.proc.stderr.read().decode(errors="replace")[-2000:]
+        """The end of Chromium's stderr."""
+        try:
+            return Path(self._log.name).read_text(errors="replace")[-2000:]
+        except OSError:
+            return ""
 
     def send(
         self,
@@ -228,8 +232,7 @@ class Browser:
                 os.close(fd)
             except OSError:
                 pass
-        if self.proc.stderr:
-            self.proc.stderr.close()
+        self._log.close()
         self._profile.cleanup()
 
     def __enter__(self):
