@@ -102,7 +102,7 @@ def _bad(port: int) -> str:
 <link rel="stylesheet" href="missing.css"></head>
 <body><p>Raw: $$\\frac{{a}}{{b}}$$ and \\(x\\), e^{{jωT}}</p>
 <pre>code may write f"x_{{o}}" and x**{{2}}</pre>
-<table><tr><td>NaN</td><td>1.0</td></tr><tr><td>2</td><td>nan NaN</td></tr></table>
+<table><tr><td>NaN</td><td>1.0</td></tr><tr><td>2</td><td>nan NaN PC_{{3,1}}</td></tr></table>
 <img src="figures/absent.png" alt="gone">
 <div style="width:3000px">wide</div>
 <script>console.error("boom"); throw new Error("uncaught here");</script>
@@ -154,9 +154,9 @@ def test_every_defect_is_caught_and_nothing_leaves_the_browser(browser, tmp_path
     assert c.broken_images == ["figures/absent.png"]
     assert any("boom" in e for e in c.console_errors)
     assert any("uncaught here" in e for e in c.console_errors)
-    # each raw pattern once; "_{" only in the code block, which is not prose
+    # each raw pattern once; "_{" only in code and a table cell, which are not prose
     assert [r.split(" ")[0] for r in c.raw_tex] == ["$$", "\\frac", "\\(", "$\\", "^{"]
-    assert c.nan_cells == 2 and c.nan_examples == ["NaN", "nan NaN"]
+    assert c.nan_cells == 2 and c.nan_examples == ["NaN", "nan NaN PC_{3,1}"]
     assert c.overflow > 1500
     assert len(c.problems) >= 8
 
@@ -203,8 +203,13 @@ def _pages():
 
 
 def _shots(folder: Path) -> Path:
+    """``results/screenshots/<folder name>``; numbered when several folders are checked
+    (a build and a release are both ``v<version>``)."""
     root = Path(os.environ.get("ABGLIB_SCREENSHOTS", REPO / "results" / "screenshots"))
-    return root / folder.name
+    folders = _folders()
+    if len(folders) == 1:
+        return root / folder.name
+    return root / f"{folders.index(folder) + 1}-{folder.name}"
 
 
 CHECKED: dict[Path, list[tuple[Path, PageCheck]]] = {}

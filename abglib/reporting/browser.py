@@ -282,15 +282,18 @@ class PageCheck:
 #: math delimiters.
 RAW_TEX = ("$$", "\\frac", "\\(", "\\[")
 #: Raw TeX that is wrong in visible prose (outside code, where Python has the same
-#: characters): a dollar before a command (``$\\alpha``), and super- or subscripts in
-#: braces written outside any math (``e^{jωT}``, ``∫_{−∞}``).
+#: characters, and outside table cells, which show CSV text as written): a dollar before a
+#: command (``$\\alpha``), and super- or subscripts in braces written outside any math
+#: (``e^{jωT}``, ``∫_{−∞}``).
 RAW_TEX_PROSE = ("$\\", "^{", "_{")
 
 _INSPECT = r"""
 (() => {
   const text = document.body ? document.body.innerText : "";
-  // visible prose: text nodes that are rendered and not inside code or typeset math
-  const skip = "code, pre, kbd, samp, script, style, textarea, mjx-container, .MathJax, .katex";
+  // visible prose: text nodes that are rendered and not inside code, typeset math or a
+  // table cell (cells show CSV text as written, e.g. the transcribed quantity "PC_{3,1}")
+  const skip = "code, pre, kbd, samp, script, style, textarea, mjx-container, .MathJax, .katex, "
+             + "td, th";
   const walker = document.createTreeWalker(document.body || document.documentElement,
                                            NodeFilter.SHOW_TEXT);
   const parts = [];
