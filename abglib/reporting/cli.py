@@ -1,4 +1,4 @@
-"""The ``abglib`` command: ``abglib verify`` and ``abglib release``.
+"""The ``abglib`` command: ``verify``, ``release``, ``changes`` and ``findings``.
 
 ``abglib verify``
     Compare the tables of a build (default ``results/reports/v<version>``, what
@@ -10,6 +10,11 @@
     Cut a release: copy a build to ``reports/v<version>``. The one deliberate step that
     writes the committed release (a build never does); it refuses to replace an existing
     release folder without ``--force``.
+``abglib changes OLD NEW``
+    What changed between two version folders (e.g. ``reports/v0.2.0`` and
+    ``reports/v0.3.0``, or a build's ``results/reports/v<version>``), per document: rows
+    added or removed, verdicts changed, reproduced values moved beyond their tolerance.
+    Prints the counts; writes ``changes.csv`` and ``changes.html`` to ``--out``.
 ``abglib findings``
     Rewrite the README's findings from the release's tables (``docs/readme_findings.md`` is the
     template); ``--check`` only reports whether the README is current.
@@ -18,6 +23,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import shutil
 import sys
 from pathlib import Path
@@ -45,6 +51,15 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("build", nargs="?", type=Path, default=BUILD, help=f"default: {BUILD}")
     r.add_argument("--to", type=Path, default=RELEASE, help=f"default: {RELEASE}")
     r.add_argument("--force", action="store_true", help="replace an existing release folder")
+    c = sub.add_parser("changes", help="what changed between two version folders")
+    c.add_argument("old", type=Path, help="the older version folder, e.g. reports/v0.2.0")
+    c.add_argument("new", type=Path, help="the newer version folder, e.g. reports/v0.3.0")
+    c.add_argument(
+        "--out",
+        type=Path,
+        default=None,
+        help="folder for changes.csv and changes.html (default: print the counts only)",
+    )
     f = sub.add_parser("findings", help="rewrite the README's findings from a release")
     f.add_argument("--release", type=Path, default=RELEASE, help=f"default: {RELEASE}")
     f.add_argument("--readme", type=Path, default=Path("README.md"))
@@ -110,10 +125,33 @@ def findings(release: Path, readme: Path, template: Path, check: bool) -> int:
     return 0
 
 
+def changes(old: Path, new: Path, out: Path | None) -> int:
+    from .._checks import AbglibValueError
+    from .changes import diff_folders, write_changes
+
+    try:
+        ch = diff_folders(old, new)
+    except AbglibValueError as exc:
+        print(f"abglib changes: {exc}", file=sys.stderr)
+        return 2
+    print(f"abglib changes: {ch.new} ({new}) against {ch.old} ({old})")
+    print(ch.counts().to_string(index=False))
+    if out is not None:
+        # links to the reports resolve when the page sits in the newer version folder
+        links = {d: f"{d}/index.html" for d in ch.docs if (new / d / "index.html").is_file()}
+        if out.resolve() != new.resolve():
+            links = {d: os.path.relpath(new / h, out) for d, h in links.items()}
+        write_changes(ch, out / "changes.csv", out / "changes.html", links)
+        print(f"wrote {out / 'changes.csv'} and {out / 'changes.html'}")
+    return 0
+
+
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     if args.command == "verify":
         return verify(args.build, args.release, args.limit, args.partial)
+    if args.command == "changes":
+        return changes(args.old, args.new, args.out)
     if args.command == "findings":
         return findings(args.release, args.readme, args.template, args.check)
     return release(args.build, args.to, args.force)

@@ -204,6 +204,8 @@ def all_targets():
         "results/scorecard.csv",
         f"{REPORTS}/index.html",
         f"{REPORTS}/scorecard.csv",
+        f"{REPORTS}/changes.html",  # against the previous version (rule changes, reports.smk)
+        f"{REPORTS}/changes.csv",
     ]
     for doc in DOCS:
         targets.append(f"{REPORTS}/{doc}/index.html")

@@ -65,3 +65,37 @@ rule report_index:
         repo=lambda wildcards, input: REPO,
     script:
         "../scripts/render_index.py"
+
+
+# ---------------------------------------------------------------- what changed (issue 13)
+# the build's comparison tables against the highest version folder below this version
+# under the repository's reports/ (the committed releases); none: a page saying so
+from abglib.reporting.changes import comparison_tables, previous_version
+
+CHANGES_PREVIOUS = previous_version(Path(workflow.basedir) / "reports", VERSION)
+
+
+rule changes:
+    input:
+        comparisons=expand("results/{doc}/comparison.csv", doc=DOCS),
+        previous=(
+            [str(p) for p in comparison_tables(CHANGES_PREVIOUS).values()]
+            if CHANGES_PREVIOUS
+            else []
+        ),
+    output:
+        csv=f"{REPORTS}/changes.csv",
+        html=f"{REPORTS}/changes.html",
+    log:
+        "logs/reports/changes.log",
+    conda:
+        "../envs/abglib.yaml"
+    params:
+        library=LIBRARY_HASH,
+        docs=DOCS,
+        version=VERSION,
+        previous=lambda wildcards, input: (
+            str(CHANGES_PREVIOUS) if CHANGES_PREVIOUS else None
+        ),
+    script:
+        "../scripts/changes.py"
