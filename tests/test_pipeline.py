@@ -207,3 +207,17 @@ def test_every_comparison_says_what_it_hinges_on(two_runs):
         assert set(robust) <= {"true", "false"}, doc
         flipped = comp[comp["robust"] == "false"]
         assert (flipped["verdict"] == "not_reproducible").all(), doc
+
+
+def test_built_reports_in_a_browser(two_runs, tmp_path):
+    """The small build's pages (not only the committed release) pass the offline browser
+    checks of tests/test_browser.py: no request, no console error, no raw TeX, no NaN,
+    no broken image, no horizontal overflow."""
+    from abglib.reporting.browser import check_folder, find_chromium
+
+    if find_chromium() is None:
+        pytest.skip("no Chromium on PATH (apt-get install chromium; .ci/run installs it)")
+    checks = check_folder(two_runs[0] / REPORTS, tmp_path)
+    assert len(checks) >= 3
+    bad = {c.url: c.problems for c in checks if c.problems}
+    assert not bad, bad

@@ -91,7 +91,7 @@ rule changes:
     conda:
         "../envs/abglib.yaml"
     params:
-        library=LIBRARY_HASH,
+        code=code_of("changes.py"),
         docs=DOCS,
         version=VERSION,
         previous=lambda wildcards, input: (
