@@ -10,6 +10,8 @@ runs at compiled speed without copying broadcast operands.
 from __future__ import annotations
 
 import functools
+import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,6 +29,12 @@ INIT_MODES = ("zero", "two_point", "three_point")
 
 # number of leading samples consumed by a point initialisation
 _POINTS = {"zero": 0, "two_point": 2, "three_point": 3}
+
+# series the batched kernel advances together (abglib._kernels.LANES, kept here so that
+# importing abglib does not import numba)
+_LANES = 4
+# below this many samples (series x n) the batched kernel runs on one thread
+_PARALLEL_SAMPLES = 1 << 16
 
 
 @dataclass(frozen=True, eq=False)
@@ -56,110 +64,16 @@ class TrackResult:
 
 
 # --------------------------------------------------------------------------- kernel
-def _recursion(z, alpha, beta, gamma, dt, detected, state0, npoints, xp, xs, vs, acc, done):
-    """Literal recursion of seed 000, eqs 1-6, for one series (numba-compiled).
-
-    ``npoints`` leading samples (0, 2 or 3) initialise the state from the measurements
-    (seed 001, section 3, and its three-point analogue) instead of being filtered.
-    The four output buffers are written in place; a buffer of length 1 (an output the
-    caller did not request) is skipped, which saves its memory traffic.
-    """
-    x = state0[0]
-    v = state0[1]
-    a = state0[2]
-    n = z.shape[0]
-    w_xp = xp.shape[0] == n
-    w_xs = xs.shape[0] == n
-    w_vs = vs.shape[0] == n
-    w_as = acc.shape[0] == n
-    for i in range(n):
-        T = dt[i]
-        if i < npoints:
-            # point initialisation: the measurement is taken as the prediction
-            # (seed 001, section 3), the state is fitted through the first points
-            if i == 0:
-                x = z[0]
-                v = 0.0
-                a = 0.0
-            elif i == 1:
-                v = (z[1] - z[0]) / T
-                x = z[1]
-                a = 0.0
-            else:
-                d1 = (z[1] - z[0]) / dt[1]
-                d2 = (z[2] - z[1]) / T
-                a = 2.0 * (d2 - d1) / (dt[1] + T)
-                v = d2 + 0.5 * a * T
-                x = z[2]
-            x_p = z[i]
-        else:
-            # predictor, eqs 4-6
-            x_p = x + T * v + 0.5 * T * T * a
-            v_p = v + T * a
-            if detected[i]:
-                # corrector, eqs 1-3
-                r = z[i] - x_p
-                x = x_p + alpha[i] * r
-                v = v_p + (beta[i] / T) * r
-                a = a + (gamma[i] / (T * T)) * r
-            else:
-                # missed detection: coast on the prediction
-                x = x_p
-                v = v_p
-        if w_xp:
-            xp[i] = x_p
-        if w_xs:
-            xs[i] = x
-        if w_vs:
-            vs[i] = v
-        if w_as:
-            acc[i] = a
-    done[0] = 1
-
-
-def _recursion_ab(z, alpha, beta, dt, detected, state0, npoints, xp, xs, vs, done):
-    """The same recursion with gamma = 0 and no acceleration state (seed 000, eqs 1-2, 4).
-
-    Bit-for-bit what :func:`_recursion` computes when gamma and the initial acceleration
-    are zero (the dropped terms are exact zeros), with a shorter dependency chain.
-    """
-    x = state0[0]
-    v = state0[1]
-    n = z.shape[0]
-    w_xp = xp.shape[0] == n
-    w_xs = xs.shape[0] == n
-    w_vs = vs.shape[0] == n
-    for i in range(n):
-        T = dt[i]
-        if i < npoints:
-            # two-point initialisation (seed 001, section 3, eqs 9-10)
-            if i == 0:
-                v = 0.0
-            else:
-                v = (z[1] - z[0]) / T
-            x = z[i]
-            x_p = z[i]
-        else:
-            x_p = x + T * v
-            if detected[i]:
-                r = z[i] - x_p
-                x = x_p + alpha[i] * r
-                v = v + (beta[i] / T) * r
-            else:
-                x = x_p
-        if w_xp:
-            xp[i] = x_p
-        if w_xs:
-            xs[i] = x
-        if w_vs:
-            vs[i] = v
-    done[0] = 1
-
-
 @functools.cache
 def _kernel(order: int = 3):
-    """Compile the recursion into a numba gufunc on first use (cached on disk)."""
+    """The per-series recursion as a numba generalised ufunc (compiled once, cached on disk).
+
+    Used when a gain or the sample interval changes along time; numpy broadcasts the
+    operands over the batch axes and calls the loop once per series.
+    """
     from numba import guvectorize
+
+    from . import _kernels
 
     # The output buffers are passed as inputs with their own core dimension (n or 1) so
     # that unrequested outputs cost no memory; numpy hands the kernel views of the
@@ -168,13 +82,20 @@ def _kernel(order: int = 3):
     if order == 2:
         sig = "void(f8[:], f8[:], f8[:], f8[:], u1[:], f8[:], i8, f8[:], f8[:], f8[:], u1[:])"
         layout = "(n),(n),(n),(n),(n),(m),(),(p),(q),(r)->()"
-        return guvectorize([sig], layout, nopython=True, cache=True)(_recursion_ab)
+        return guvectorize([sig], layout, nopython=True, cache=True)(_kernels.series2)
     sig = (
         "void(f8[:], f8[:], f8[:], f8[:], f8[:], u1[:], f8[:], i8, "
         "f8[:], f8[:], f8[:], f8[:], u1[:])"
     )
     layout = "(n),(n),(n),(n),(n),(n),(m),(),(p),(q),(r),(s)->()"
-    return guvectorize([sig], layout, nopython=True, cache=True)(_recursion)
+    return guvectorize([sig], layout, nopython=True, cache=True)(_kernels.series3)
+
+
+def _batch_kernel(order: int, parallel: bool):
+    """The batched kernel (gains and dt constant in time; see :mod:`abglib._kernels`)."""
+    from . import _kernels
+
+    return getattr(_kernels, f"run{order}" + ("_par" if parallel else ""))
 
 
 # --------------------------------------------------------------------------- checks
@@ -213,8 +134,55 @@ def _initial_state(init, batch_shape):
     return state, 0
 
 
+def _out_buffers(out, outputs, full: tuple, inputs: dict) -> dict:
+    """Validate ``track(..., out=)``; return ``{name: buffer}`` of the buffers given."""
+    if out is None:
+        return {}
+    if isinstance(out, TrackResult):
+        out = dict(zip(OUTPUTS, out, strict=True))
+    elif not isinstance(out, Mapping):
+        raise AbglibValueError(
+            f"out must be a dict of arrays keyed by {', '.join(OUTPUTS)} (or a TrackResult), "
+            f"got {type(out).__name__}"
+        )
+    buffers = {}
+    for name, buf in out.items():
+        if name not in OUTPUTS:
+            raise AbglibValueError(
+                f"out has an unknown key {name!r}; the keys are {', '.join(OUTPUTS)}"
+            )
+        if buf is None:
+            continue
+        if name not in outputs:
+            raise AbglibValueError(
+                f"out[{name!r}] is given but {name!r} is not in outputs={tuple(outputs)!r}"
+            )
+        if not isinstance(buf, np.ndarray):
+            raise AbglibValueError(f"out[{name!r}] must be a numpy array, got {type(buf).__name__}")
+        if buf.dtype != np.float64:
+            raise AbglibValueError(f"out[{name!r}] must have dtype float64, got {buf.dtype}")
+        if buf.shape != full:
+            raise AbglibValueError(
+                f"out[{name!r}] has shape {buf.shape}, but the outputs have shape {full} "
+                "(z broadcast against the gains, dt and detected)"
+            )
+        if not buf.flags.writeable:
+            raise AbglibValueError(f"out[{name!r}] is read-only")
+        others = {**inputs, **{f"out[{k!r}]": v for k, v in buffers.items()}}
+        for other, arr in others.items():
+            if isinstance(arr, np.ndarray) and np.may_share_memory(buf, arr):
+                raise AbglibValueError(
+                    f"out[{name!r}] shares memory with {other}; output buffers must not "
+                    "overlap the inputs or each other"
+                )
+        buffers[name] = buf
+    return buffers
+
+
 # --------------------------------------------------------------------------- public
-def track(z, gains: Gains, dt=1.0, init="zero", detected=None, outputs=OUTPUTS) -> TrackResult:
+def track(
+    z, gains: Gains, dt=1.0, init="zero", detected=None, outputs=OUTPUTS, out=None
+) -> TrackResult:
     """Run a fixed-gain alpha-beta(-gamma) tracker over measurements.
 
     Parameters
@@ -244,6 +212,15 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None, outputs=OUTPUTS) 
     outputs : sequence of str, default all of ``OUTPUTS``
         Which of ``x_pred``, ``x_smooth``, ``v_smooth``, ``a_smooth`` to return; the
         others are ``None`` and cost no memory (useful in large Monte Carlo runs).
+    out : dict of str to array, or TrackResult, optional
+        Caller-owned buffers to write outputs into, keyed by output name (a previous
+        call's :class:`TrackResult` works too; its ``None`` entries are skipped). Each
+        must be a writeable float64 array of the broadcast output shape ``(..., n)``
+        that shares no memory with the inputs or the other buffers; outputs without a
+        buffer are allocated. Reusing buffers across calls saves fresh memory pages
+        (the main cost of a large batched call); a non-contiguous buffer works but costs
+        a copy. The returned arrays are these buffers. If ``track`` raises, a buffer's
+        contents are unspecified.
 
     Returns
     -------
@@ -256,12 +233,21 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None, outputs=OUTPUTS) 
     ValueError
         Empty ``z``; NaN or infinite measurements where detected; ``dt <= 0``; shapes
         that do not broadcast; an unknown ``init``; a point initialisation without the
-        detections (or samples) it needs.
+        detections (or samples) it needs; an ``out`` buffer of the wrong name, type,
+        dtype or shape, read-only, overlapping an input or another buffer, or given for
+        an output not requested.
 
     Notes
     -----
     Unstable gains run without complaint (users study instability); see
-    :func:`abglib.analysis.is_stable`. The recursion is seed 000, eqs 1-6:
+    :func:`abglib.analysis.is_stable`.
+
+    When gains and ``dt`` are constant along time (any batch shape, any ``init`` and
+    ``detected``), a batched kernel advances four series at a time in one loop, on all of
+    numba's threads for large batches; gains or ``dt`` that change along time go through
+    a per-series loop. Both evaluate the same expressions in the same order (no
+    fast-math), so the results do not depend on the path. The recursion is seed 000,
+    eqs 1-6:
 
     .. math::
         x_p = \\bar x_{n-1} + T\\bar v_{n-1} + \\tfrac12 T^2 \\bar a_{n-1},\\quad
@@ -305,7 +291,7 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None, outputs=OUTPUTS) 
             raise AbglibValueError(f"detected must be a boolean array, got dtype {det.dtype}")
         det = det.view(np.uint8)
 
-    operands = {
+    given = {
         "z": z,
         "alpha": np.asarray(gains.alpha, dtype=np.float64),
         "beta": np.asarray(gains.beta, dtype=np.float64),
@@ -313,33 +299,26 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None, outputs=OUTPUTS) 
         "dt": dt,
         "detected": det,
     }
-    operands = {k: _time_operand(k, v, n) for k, v in operands.items()}
+    operands = {k: _time_operand(k, v, n) for k, v in given.items()}
     try:
         full = np.broadcast_shapes(*(v.shape for v in operands.values()))
     except ValueError:
         shapes = ", ".join(f"{k} {v.shape}" for k, v in operands.items())
         raise AbglibValueError(f"operands do not broadcast together: {shapes}") from None
 
-    # measurements must be finite wherever they are used; a finite sum proves it in one
-    # cheap pass (an overflowing sum of finite values falls through to the exact check)
-    det_full = operands["detected"].astype(bool)
-    if np.isfinite(np.sum(z)):
-        bad = np.zeros((), dtype=bool)
-    else:
-        bad = ~np.isfinite(operands["z"]) & det_full
-    if bad.any():
-        idx = tuple(int(i) for i in np.argwhere(bad)[0])
-        zb = np.broadcast_to(operands["z"], full)
-        raise AbglibValueError(
-            f"z must be finite where detected, got {describe(zb[idx])} at index {idx}; "
-            "mark missed detections with detected=False (or a masked array)"
-        )
+    # the batched kernel needs gains and dt constant along time; it checks z's
+    # finiteness itself (a sum per series), saving a pass over z
+    batched = n == 1 or all(
+        given[k].ndim == 0 or given[k].shape[-1] == 1 for k in ("alpha", "beta", "gamma", "dt")
+    )
+    if not batched:
+        _check_measurements(operands, full, quick=True)
 
     state0, npoints = _initial_state(init, full[:-1])
     if npoints:
         if n < npoints:
             raise AbglibValueError(f"init={init!r} needs at least {npoints} samples, got n={n}")
-        if not det_full[..., :npoints].all():
+        if not (operands["detected"][..., :npoints] != 0).all():
             raise AbglibValueError(
                 f"init={init!r} needs detections at samples 0..{npoints - 1}; "
                 "some are marked missed"
@@ -357,35 +336,120 @@ def track(z, gains: Gains, dt=1.0, init="zero", detected=None, outputs=OUTPUTS) 
             f"shape {full[:-1]}"
         ) from None
 
-    batch = full[:-1]
-    alpha_beta = npoints < 3 and not np.any(operands["gamma"]) and not np.any(state0[..., 2])
-    buffers = {
-        name: np.empty(full) if name in outputs else np.empty(batch + (1,)) for name in OUTPUTS
-    }
-    common = (operands["z"], operands["alpha"], operands["beta"])
-    if alpha_beta:
-        # alpha-beta tracker: acceleration stays exactly zero (np.zeros maps zero pages
-        # lazily, so an unread a_smooth costs nothing)
-        if "a_smooth" in outputs:
-            buffers["a_smooth"] = np.zeros(full)
-        _kernel(2)(
-            *common,
-            operands["dt"],
-            operands["detected"],
-            state0,
-            npoints,
-            buffers["x_pred"],
-            buffers["x_smooth"],
-            buffers["v_smooth"],
-        )
+    inputs = {k: v for k, v in given.items() if k != "detected"}
+    inputs.update(detected=detected, init=init if isinstance(init, np.ndarray) else None)
+    user = _out_buffers(out, outputs, full, inputs)
+    has_det = detected is not None
+    order = 2 if npoints < 3 and not np.any(given["gamma"]) and not np.any(state0[..., 2]) else 3
+    buffers = {}
+    for name in outputs:
+        if name in user:
+            buffers[name] = user[name]
+        elif name == "a_smooth" and order == 2:
+            # an alpha-beta tracker's acceleration stays exactly zero (np.zeros maps zero
+            # pages lazily, so an unread a_smooth costs nothing)
+            buffers[name] = np.zeros(full)
+        else:
+            buffers[name] = np.empty(full)
+    if order == 2 and "a_smooth" in user:
+        user["a_smooth"][...] = 0.0
+
+    if batched:
+        _run_batched(order, given, operands, full, state0, npoints, has_det, buffers)
     else:
-        _kernel(3)(
-            *common,
-            operands["gamma"],
-            operands["dt"],
-            operands["detected"],
-            state0,
-            npoints,
-            *buffers.values(),
+        _run_series(order, operands, full, state0, npoints, buffers)
+    return TrackResult(**{k: buffers.get(k) for k in OUTPUTS})
+
+
+# --------------------------------------------------------------------------- drivers
+def _check_measurements(operands, full, quick):
+    """Raise unless z is finite wherever it is used (detected).
+
+    ``quick``: a finite sum proves it in one cheap pass (an overflowing sum of finite
+    values falls through to the exact check).
+    """
+    if quick and np.isfinite(np.sum(operands["z"])):
+        return
+    bad = ~np.isfinite(operands["z"]) & (operands["detected"] != 0)
+    if bad.any():
+        idx = tuple(int(i) for i in np.argwhere(bad)[0])
+        zb = np.broadcast_to(operands["z"], full)
+        raise AbglibValueError(
+            f"z must be finite where detected, got {describe(zb[idx])} at index {idx}; "
+            "mark missed detections with detected=False (or a masked array)"
         )
-    return TrackResult(**{k: (v if k in outputs else None) for k, v in buffers.items()})
+
+
+def _run_series(order, operands, full, state0, npoints, buffers):
+    """The per-series generalised ufunc (operands that change along time)."""
+    batch = full[:-1]
+    bufs = [buffers.get(k, np.empty(batch + (1,))) for k in OUTPUTS[: order + 1]]
+    gains = [operands[k] for k in ("alpha", "beta", "gamma")[:order]]
+    _kernel(order)(
+        operands["z"], *gains, operands["dt"], operands["detected"], state0, npoints, *bufs
+    )
+
+
+def _rows(arr: np.ndarray, batch: tuple) -> np.ndarray:
+    """For each series of ``batch`` (flattened), its row in ``arr.reshape(-1, ...)``."""
+    lead = arr.shape[:-1]
+    idx = np.arange(math.prod(lead), dtype=np.int64).reshape(lead)
+    return np.broadcast_to(idx, batch).ravel()
+
+
+def _run_batched(order, given, operands, full, state0, npoints, has_det, buffers):
+    """The batched kernel: gains and dt constant along time within each series."""
+    batch, n = full[:-1], full[-1]
+    nser = math.prod(batch)
+    if nser == 0:
+        return
+
+    def per_series(name):
+        arr = given[name]
+        return np.broadcast_to(arr if arr.ndim == 0 else arr[..., 0], batch).ravel()
+
+    T = per_series("dt")
+    prm = np.empty((nser, 5))
+    prm[:, 0] = T
+    prm[:, 1] = 0.5 * T * T
+    prm[:, 2] = per_series("alpha")
+    prm[:, 3] = per_series("beta") / T
+    prm[:, 4] = per_series("gamma") / (T * T)
+    st = np.ascontiguousarray(np.broadcast_to(state0, batch + (3,))).reshape(nser, 3)
+
+    z = given["z"]
+    rz = _rows(z, batch)
+    z2 = np.ascontiguousarray(z.reshape(-1, n))
+    if has_det:
+        d = given["detected"]
+        d = np.broadcast_to(d, (d.shape[:-1] if d.ndim else ()) + (n,))
+        rd = _rows(d, batch)
+        det = np.ascontiguousarray(d).reshape(-1, n)
+    else:
+        rd = np.zeros(nser, dtype=np.int64)
+        det = np.ones((1, 1), dtype=np.uint8)
+
+    # the kernel writes (series, n) C-contiguous arrays: the caller's buffer as such a
+    # view when it is contiguous, else a scratch array copied back afterwards
+    names = OUTPUTS[: order + 1]
+    views, copy_back = [], []
+    for name in names:
+        buf = buffers.get(name)
+        if buf is None:
+            views.append(np.empty((1, 1)))
+        elif buf.flags.c_contiguous:
+            views.append(buf.reshape(nser, n))
+        else:
+            views.append(np.empty((nser, n)))
+            copy_back.append((buf, views[-1]))
+    write = tuple(name in buffers for name in names)
+    zs = np.empty(nser)
+    # threads pay off only on enough work (their start-up costs ~ 10-100 microseconds)
+    parallel = nser >= 2 * _LANES and nser * n >= _PARALLEL_SAMPLES
+    _batch_kernel(order, parallel)(
+        z2, rz, prm, st, npoints, det, rd, has_det, tuple(views), write, zs
+    )
+    for buf, view in copy_back:
+        buf[...] = view.reshape(full)
+    if not np.isfinite(np.sum(zs)):
+        _check_measurements(operands, full, quick=False)

@@ -238,3 +238,198 @@ def test_track_refuses_strings_and_complex(kwargs, match):
     args = {"z": np.ones(5), "dt": 1.0, **kwargs}
     with pytest.raises(AbglibValueError, match=match):
         track(args["z"], Gains(0.5, 0.2), dt=args["dt"])
+
+
+# --------------------------------------------------------------------------- batched kernel
+# Gains and dt constant in time go through abglib._kernels.run2/run3 (four series per loop,
+# threads for large batches); time-varying ones through the per-series gufunc. Both are
+# checked against the literal recursion, and against each other bit for bit.
+
+ORDERS = {"alpha-beta": (0.45, 0.12, 0.0), "alpha-beta-gamma": (0.5, 0.2, 0.01)}
+
+
+@pytest.mark.parametrize("gains", ORDERS.values(), ids=ORDERS.keys())
+@pytest.mark.parametrize("runs", [1, 3, 4, 9, 70])  # leftovers of the four-series blocks
+def test_batched_kernel_matches_literal_recursion(gains, runs):
+    rng = np.random.default_rng(runs)
+    z = rng.normal(size=(runs, 40)).cumsum(axis=-1)
+    out = track(z, Gains(*gains), dt=0.3)
+    for r in range(runs):
+        _assert_matches_reference(out, literal_track(z[r], *gains, dt=0.3), index=(r,))
+
+
+@pytest.mark.parametrize("gains", ORDERS.values(), ids=ORDERS.keys())
+@pytest.mark.parametrize("init", ["zero", "two_point", "three_point", "state"])
+@pytest.mark.parametrize("with_det", [False, True])
+def test_batched_equals_per_series_bit_for_bit(gains, init, with_det):
+    """The same expressions in the same order: both paths give identical bits."""
+    if init == "three_point" and gains[2] == 0.0:
+        pytest.skip("three_point needs gamma != 0")
+    rng = np.random.default_rng(11)
+    runs, n = 13, 64
+    z = rng.normal(size=(runs, n)).cumsum(axis=-1)
+    det = rng.uniform(size=(runs, n)) > 0.25 if with_det else None
+    if with_det:
+        det[:, :3] = True
+        z = np.where(det, z, np.nan)  # missed samples are never read
+    state = rng.normal(size=(runs, 3)) if init == "state" else init
+    if init == "state" and gains[2] == 0.0:
+        state[:, 2] = 0.0
+    g = Gains(*gains)
+    fast = track(z, g, dt=0.4, init=state, detected=det)
+    # an all-equal time-varying dt forces the per-series gufunc with the same values
+    slow = track(z, g, dt=np.full(n, 0.4), init=state, detected=det)
+    for name in OUTPUTS:
+        np.testing.assert_array_equal(getattr(fast, name), getattr(slow, name), err_msg=name)
+    ref = literal_track(
+        np.nan_to_num(z[5]), *gains, dt=0.4, detected=None if det is None else det[5],
+        state=state[5] if init == "state" else (0.0, 0.0, 0.0),
+    )  # fmt: skip
+    if init == "zero" or init == "state":
+        _assert_matches_reference(fast, ref, index=(5,))
+
+
+def test_large_batch_uses_threads_and_stays_exact():
+    from abglib import engine
+
+    rng = np.random.default_rng(12)
+    runs, n = 203, 400  # > engine._PARALLEL_SAMPLES samples: the prange kernel
+    assert runs * n >= engine._PARALLEL_SAMPLES
+    z = rng.normal(size=(runs, n)).cumsum(axis=-1)
+    g = Gains(0.5, 0.2, 0.01)
+    out = track(z, g, dt=0.25)
+    one = track(z[:3], g, dt=0.25)  # serial kernel
+    for name in OUTPUTS:
+        np.testing.assert_array_equal(getattr(out, name)[:3], getattr(one, name), err_msg=name)
+    for r in (0, 101, 202):
+        _assert_matches_reference(out, literal_track(z[r], 0.5, 0.2, 0.01, 0.25), index=(r,))
+
+
+def test_gain_bank_with_broadcast_z_dt_and_state():
+    """A bank (k, 1, 1) against runs (r, n), dt per run (r, 1), z shared rows."""
+    rng = np.random.default_rng(13)
+    k, runs, n = 3, 6, 30
+    z = rng.normal(size=(runs, n)).cumsum(axis=-1)
+    alphas = np.array([0.2, 0.5, 0.8])
+    bank = Gains(alphas[:, None, None], 0.1, np.array([0.0, 0.01, 0.02])[:, None, None])
+    dts = rng.uniform(0.1, 2.0, size=(runs, 1))
+    state = (1.0, -0.5, 0.0)
+    out = track(z, bank, dt=dts, init=state)
+    assert out.x_smooth.shape == (k, runs, n)
+    for j in range(k):
+        for r in range(runs):
+            ref = literal_track(z[r], alphas[j], 0.1, 0.01 * j, dts[r, 0], state=state)
+            _assert_matches_reference(out, ref, index=(j, r))
+    # one series against a bank: z (n,) gives outputs (k, 1, n)
+    single = track(z[2], bank, dt=dts[2, 0], init=state)
+    np.testing.assert_array_equal(single.x_pred[:, 0], out.x_pred[:, 2])
+
+
+def test_non_contiguous_and_read_only_inputs():
+    rng = np.random.default_rng(14)
+    big = rng.normal(size=(40, 8)).cumsum(axis=0)
+    z = big.T[:, ::2]  # (8, 20), strided both ways
+    assert not z.flags.c_contiguous
+    g = Gains(0.5, 0.2, 0.01)
+    out = track(z, g, dt=0.5)
+    ref = track(np.ascontiguousarray(z), g, dt=0.5)
+    for name in OUTPUTS:
+        np.testing.assert_array_equal(getattr(out, name), getattr(ref, name), err_msg=name)
+    ro = np.ascontiguousarray(z)
+    ro.setflags(write=False)
+    np.testing.assert_array_equal(track(ro, g, dt=0.5).x_smooth, ref.x_smooth)
+    _assert_matches_reference(out, literal_track(z[3], 0.5, 0.2, 0.01, 0.5), index=(3,))
+
+
+@pytest.mark.parametrize("gains", ORDERS.values(), ids=ORDERS.keys())
+@pytest.mark.parametrize("time_varying", [False, True])
+def test_out_buffers_are_filled_and_returned(gains, time_varying):
+    rng = np.random.default_rng(15)
+    z = rng.normal(size=(9, 50)).cumsum(axis=-1)
+    dt = np.full(50, 0.2) if time_varying else 0.2  # gufunc or batched path
+    g = Gains(*gains)
+    ref = track(z, g, dt=dt)
+    bufs = {name: np.full(z.shape, np.nan) for name in OUTPUTS}
+    out = track(z, g, dt=dt, out=bufs)
+    for name in OUTPUTS:
+        assert getattr(out, name) is bufs[name]
+        np.testing.assert_array_equal(bufs[name], getattr(ref, name), err_msg=name)
+    # a previous result as out, with other data: overwritten in place, no stale values
+    z2 = rng.normal(size=z.shape).cumsum(axis=-1)
+    again = track(z2, g, dt=dt, out=out)
+    assert again.x_pred is bufs["x_pred"]
+    np.testing.assert_array_equal(again.v_smooth, track(z2, g, dt=dt).v_smooth)
+    assert np.all(again.a_smooth == 0.0) == (gains[2] == 0.0)
+    # only some outputs, one of them in a buffer
+    xs = np.empty(z.shape)
+    part = track(z, g, dt=dt, outputs=("x_smooth", "v_smooth"), out={"x_smooth": xs})
+    assert part.x_smooth is xs and part.x_pred is None
+    np.testing.assert_array_equal(xs, ref.x_smooth)
+    np.testing.assert_array_equal(part.v_smooth, ref.v_smooth)
+
+
+def test_non_contiguous_out_buffer_and_bank_shape():
+    rng = np.random.default_rng(16)
+    z = rng.normal(size=(5, 30)).cumsum(axis=-1)
+    bank = Gains(np.array([0.3, 0.6])[:, None, None], 0.1, 0.005)
+    ref = track(z, bank)
+    big = np.zeros((2, 5, 60))
+    view = big[..., ::2]  # (2, 5, 30), not contiguous: written through a copy
+    out = track(z, bank, out={"x_smooth": view})
+    assert out.x_smooth is view
+    np.testing.assert_array_equal(big[..., ::2], ref.x_smooth)
+    assert np.all(big[..., 1::2] == 0.0)  # the gaps untouched
+
+
+def test_out_buffers_give_the_error_even_after_writing():
+    z = np.array([[1.0, 2.0, 3.0], [1.0, np.nan, 3.0]])
+    with pytest.raises(AbglibValueError, match=r"got nan at index \(1, 1\)"):
+        track(z, Gains(0.5, 0.1), out={"x_pred": np.empty(z.shape)})
+
+
+@pytest.mark.parametrize(
+    ("out", "match"),
+    [
+        ([np.empty(3)], r"out must be a dict of arrays keyed by x_pred, .* got list"),
+        ({"x_filt": np.empty(3)}, r"out has an unknown key 'x_filt'; the keys are x_pred"),
+        ({"x_pred": [0.0, 0.0, 0.0]}, r"out\['x_pred'\] must be a numpy array, got list"),
+        (
+            {"x_pred": np.empty(3, np.float32)},
+            r"out\['x_pred'\] must have dtype float64, got float32",
+        ),  # noqa: E501
+        (
+            {"x_pred": np.empty(4)},
+            r"out\['x_pred'\] has shape \(4,\), but the outputs have shape \(3,\)",
+        ),  # noqa: E501
+        ({"x_pred": np.empty((1, 3))}, r"has shape \(1, 3\), but the outputs have shape \(3,\)"),
+        ({"x_pred": np.broadcast_to(np.empty(1), (3,))}, r"out\['x_pred'\] is read-only"),
+        ({"x_pred": "z"}, r"out\['x_pred'\] shares memory with z"),
+        (
+            {"x_pred": "same", "x_smooth": "same"},
+            r"out\['x_smooth'\] shares memory with out\['x_pred'\]",
+        ),  # noqa: E501
+    ],
+)
+def test_out_buffer_errors(out, match):
+    z = np.array([1.0, 2.0, 3.0])
+    shared = np.empty(3)
+    named = {"z": z, "same": shared}
+    if isinstance(out, dict):
+        out = {k: named[v] if isinstance(v, str) else v for k, v in out.items()}
+    with pytest.raises(AbglibValueError, match=match):
+        track(z, Gains(0.5, 0.1), out=out)
+
+
+def test_out_buffer_for_an_output_not_requested():
+    with pytest.raises(
+        AbglibValueError, match=r"out\['x_pred'\] is given but 'x_pred' is not in outputs"
+    ):  # noqa: E501
+        track(np.ones(3), Gains(0.5, 0.1), outputs=("x_smooth",), out={"x_pred": np.empty(3)})
+
+
+def test_buffer_errors_leave_the_buffers_alone():
+    z = np.ones(3)
+    good = np.full(3, 7.0)
+    with pytest.raises(AbglibValueError, match="dtype float64"):
+        track(z, Gains(0.5, 0.1), out={"x_smooth": good, "x_pred": np.empty(3, np.float32)})
+    assert np.all(good == 7.0)

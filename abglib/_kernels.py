@@ -1,0 +1,353 @@
+"""Compiled kernels behind :func:`abglib.track` (private; numba, cached on disk).
+
+One literal recursion (seed 000, eqs 1-6) in :func:`_step3` / :func:`_step2`, driven two
+ways:
+
+* **per series** (:func:`series3`, :func:`series2`, compiled as numba generalised ufuncs
+  by :mod:`abglib.engine`): gains, sample interval and detections may change at every
+  sample; numpy broadcasts over the batch axes and calls the loop once per series.
+* **batched** (:func:`run3`, :func:`run2` and their ``_par`` twins): gains and sample
+  interval constant in time within each series (the Monte Carlo case). Four series are
+  advanced together, sample by sample, in one loop: their recursions are independent,
+  so the processor overlaps four dependency chains instead of waiting on one (the
+  recursion is latency-bound), and the ``_par`` twins split the series over threads
+  with ``prange``. The per-series quotients ``beta / T``, ``gamma / T^2`` and
+  ``T^2 / 2`` are computed once per series instead of once per sample.
+
+Both drivers evaluate the same expressions in the same order, without ``fastmath``, so
+their results are bit-identical to each other and to the literal recursion's rounding.
+"""
+
+from __future__ import annotations
+
+from numba import njit, prange
+
+# series advanced together by one batched block (independent dependency chains)
+LANES = 4
+
+
+# --------------------------------------------------------------------------- one step
+@njit(cache=True, inline="always")
+def _step3(x, v, a, zi, d, T, h, alpha, b, c):
+    """One sample of seed 000, eqs 1-6: returns ``(x_p, x, v, a)`` after sample ``zi``.
+
+    ``h = T*T/2`` (as ``0.5 * T * T``), ``b = beta / T``, ``c = gamma / (T * T)``; ``d``
+    False is a missed detection (coast on the prediction; ``zi`` is not read).
+    """
+    x_p = x + T * v + h * a  # eq 4
+    v_p = v + T * a  # eq 5
+    if d:
+        r = zi - x_p
+        return x_p, x_p + alpha * r, v_p + b * r, a + c * r  # eqs 1-3
+    return x_p, x_p, v_p, a
+
+
+@njit(cache=True, inline="always")
+def _step2(x, v, zi, d, T, alpha, b):
+    """:func:`_step3` with ``gamma = a = 0`` (the dropped terms are exact zeros)."""
+    x_p = x + T * v
+    if d:
+        r = zi - x_p
+        return x_p, x_p + alpha * r, v + b * r
+    return x_p, x_p, v
+
+
+@njit(cache=True, inline="always")
+def _point(z0, z1, z2, T1, T2, i):
+    """State ``(x, v, a)`` after point-initialisation sample ``i`` (0, 1 or 2).
+
+    Seed 001, section 3 (eqs 9-10) for samples 0-1 and its three-point (parabola)
+    analogue for sample 2; ``T1``, ``T2`` are the intervals before samples 1 and 2.
+    """
+    if i == 0:
+        return z0, 0.0, 0.0
+    if i == 1:
+        return z1, (z1 - z0) / T1, 0.0
+    d1 = (z1 - z0) / T1
+    d2 = (z2 - z1) / T2
+    a = 2.0 * (d2 - d1) / (T1 + T2)
+    return z2, d2 + 0.5 * a * T2, a
+
+
+# --------------------------------------------------------------------------- per series
+def series3(z, alpha, beta, gamma, dt, detected, state0, npoints, xp, xs, vs, acc, done):
+    """One series, every operand per sample (body of the order-3 generalised ufunc).
+
+    ``npoints`` leading samples (0, 2 or 3) initialise the state from the measurements
+    instead of being filtered. An output buffer of length 1 (not requested) is skipped.
+    """
+    x = state0[0]
+    v = state0[1]
+    a = state0[2]
+    n = z.shape[0]
+    w_xp = xp.shape[0] == n
+    w_xs = xs.shape[0] == n
+    w_vs = vs.shape[0] == n
+    w_as = acc.shape[0] == n
+    for i in range(n):
+        T = dt[i]
+        if i < npoints:
+            # the measurement is taken as the prediction (seed 001, section 3)
+            x, v, a = _point(z[0], z[min(1, n - 1)], z[min(2, n - 1)], dt[min(1, n - 1)], T, i)
+            x_p = z[i]
+        else:
+            h, b, c = 0.5 * T * T, beta[i] / T, gamma[i] / (T * T)
+            x_p, x, v, a = _step3(x, v, a, z[i], detected[i], T, h, alpha[i], b, c)
+        if w_xp:
+            xp[i] = x_p
+        if w_xs:
+            xs[i] = x
+        if w_vs:
+            vs[i] = v
+        if w_as:
+            acc[i] = a
+    done[0] = 1
+
+
+def series2(z, alpha, beta, dt, detected, state0, npoints, xp, xs, vs, done):
+    """:func:`series3` with gamma = 0 and no acceleration state (order-2 gufunc body)."""
+    x = state0[0]
+    v = state0[1]
+    n = z.shape[0]
+    w_xp = xp.shape[0] == n
+    w_xs = xs.shape[0] == n
+    w_vs = vs.shape[0] == n
+    for i in range(n):
+        T = dt[i]
+        if i < npoints:
+            x, v, _ = _point(z[0], z[min(1, n - 1)], z[0], dt[min(1, n - 1)], T, i)
+            x_p = z[i]
+        else:
+            x_p, x, v = _step2(x, v, z[i], detected[i], T, alpha[i], beta[i] / T)
+        if w_xp:
+            xp[i] = x_p
+        if w_xs:
+            xs[i] = x
+        if w_vs:
+            vs[i] = v
+    done[0] = 1
+
+
+# --------------------------------------------------------------------------- batched
+# Arguments of the batched kernels, for B series of n samples:
+#   z (P, n) C-contiguous; rz (B,) the row of z of each series
+#   prm (B, 5): dt, 0.5 * dt * dt, alpha, beta / dt, gamma / (dt * dt) of each series
+#   st (B, 3): state (x, v, a) before the first sample; npoints: point-initialised samples
+#   det (Q, n) uint8 and rd (B,): detections, read only if has_det
+#   outs: (x_pred, x_smooth, v_smooth[, a_smooth]) arrays (B, n), each written only where
+#     its flag in w is True (else any (1, 1) array)
+#   zs (B,): written with the sum of each series' used measurements (the caller's
+#     finiteness check, done here to save a pass over z)
+
+
+@njit(cache=True, inline="always")
+def _store4(out, write, i, s0, u0, u1, u2, u3):
+    """Write sample ``i`` of series ``s0 .. s0 + 3`` into ``out`` if ``write``."""
+    if write:
+        out[s0, i] = u0
+        out[s0 + 1, i] = u1
+        out[s0 + 2, i] = u2
+        out[s0 + 3, i] = u3
+
+
+@njit(cache=True)
+def _one3(s, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
+    """One series of the batch, order 3 (a leftover of the four-series blocks)."""
+    n = z.shape[1]
+    r, q = rz[s], rd[s]
+    T, h, al, b, c = prm[s, 0], prm[s, 1], prm[s, 2], prm[s, 3], prm[s, 4]
+    x, v, a = st[s, 0], st[s, 1], st[s, 2]
+    j1, j2 = min(1, n - 1), min(2, n - 1)
+    tot = 0.0
+    for i in range(n):
+        zi = z[r, i]
+        if i < npoints:
+            x, v, a = _point(z[r, 0], z[r, j1], z[r, j2], T, T, i)
+            x_p = zi
+            tot += zi
+        else:
+            d = det[q, i] != 0 if has_det else True
+            x_p, x, v, a = _step3(x, v, a, zi, d, T, h, al, b, c)
+            tot += zi if d else 0.0
+        if w[0]:
+            outs[0][s, i] = x_p
+        if w[1]:
+            outs[1][s, i] = x
+        if w[2]:
+            outs[2][s, i] = v
+        if w[3]:
+            outs[3][s, i] = a
+    zs[s] = tot
+
+
+@njit(cache=True)
+def _block3(s0, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
+    """Series ``s0 .. s0 + 3`` of the batch, order 3, advanced together sample by sample."""
+    n = z.shape[1]
+    xp, xs, vs, acc = outs
+    s1, s2, s3 = s0 + 1, s0 + 2, s0 + 3
+    r0, r1, r2, r3 = rz[s0], rz[s1], rz[s2], rz[s3]
+    q0, q1, q2, q3 = rd[s0], rd[s1], rd[s2], rd[s3]
+    T0, h0, al0, b0, c0 = prm[s0, 0], prm[s0, 1], prm[s0, 2], prm[s0, 3], prm[s0, 4]
+    T1, h1, al1, b1, c1 = prm[s1, 0], prm[s1, 1], prm[s1, 2], prm[s1, 3], prm[s1, 4]
+    T2, h2, al2, b2, c2 = prm[s2, 0], prm[s2, 1], prm[s2, 2], prm[s2, 3], prm[s2, 4]
+    T3, h3, al3, b3, c3 = prm[s3, 0], prm[s3, 1], prm[s3, 2], prm[s3, 3], prm[s3, 4]
+    x0, v0, a0 = st[s0, 0], st[s0, 1], st[s0, 2]
+    x1, v1, a1 = st[s1, 0], st[s1, 1], st[s1, 2]
+    x2, v2, a2 = st[s2, 0], st[s2, 1], st[s2, 2]
+    x3, v3, a3 = st[s3, 0], st[s3, 1], st[s3, 2]
+    t0 = t1 = t2 = t3 = 0.0
+    j1, j2 = min(1, n - 1), min(2, n - 1)
+    for i in range(npoints):
+        x0, v0, a0 = _point(z[r0, 0], z[r0, j1], z[r0, j2], T0, T0, i)
+        x1, v1, a1 = _point(z[r1, 0], z[r1, j1], z[r1, j2], T1, T1, i)
+        x2, v2, a2 = _point(z[r2, 0], z[r2, j1], z[r2, j2], T2, T2, i)
+        x3, v3, a3 = _point(z[r3, 0], z[r3, j1], z[r3, j2], T3, T3, i)
+        y0, y1, y2, y3 = z[r0, i], z[r1, i], z[r2, i], z[r3, i]
+        t0, t1, t2, t3 = t0 + y0, t1 + y1, t2 + y2, t3 + y3
+        _store4(xp, w[0], i, s0, y0, y1, y2, y3)
+        _store4(xs, w[1], i, s0, x0, x1, x2, x3)
+        _store4(vs, w[2], i, s0, v0, v1, v2, v3)
+        _store4(acc, w[3], i, s0, a0, a1, a2, a3)
+    d0 = d1 = d2 = d3 = True
+    for i in range(npoints, n):
+        if has_det:
+            d0, d1, d2, d3 = det[q0, i] != 0, det[q1, i] != 0, det[q2, i] != 0, det[q3, i] != 0
+        y0, y1, y2, y3 = z[r0, i], z[r1, i], z[r2, i], z[r3, i]
+        p0, x0, v0, a0 = _step3(x0, v0, a0, y0, d0, T0, h0, al0, b0, c0)
+        p1, x1, v1, a1 = _step3(x1, v1, a1, y1, d1, T1, h1, al1, b1, c1)
+        p2, x2, v2, a2 = _step3(x2, v2, a2, y2, d2, T2, h2, al2, b2, c2)
+        p3, x3, v3, a3 = _step3(x3, v3, a3, y3, d3, T3, h3, al3, b3, c3)
+        if has_det:
+            t0 += y0 if d0 else 0.0
+            t1 += y1 if d1 else 0.0
+            t2 += y2 if d2 else 0.0
+            t3 += y3 if d3 else 0.0
+        else:
+            t0, t1, t2, t3 = t0 + y0, t1 + y1, t2 + y2, t3 + y3
+        _store4(xp, w[0], i, s0, p0, p1, p2, p3)
+        _store4(xs, w[1], i, s0, x0, x1, x2, x3)
+        _store4(vs, w[2], i, s0, v0, v1, v2, v3)
+        _store4(acc, w[3], i, s0, a0, a1, a2, a3)
+    zs[s0], zs[s1], zs[s2], zs[s3] = t0, t1, t2, t3
+
+
+@njit(cache=True)
+def _one2(s, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
+    """One series of the batch, order 2 (gamma = 0, no acceleration state)."""
+    n = z.shape[1]
+    r, q = rz[s], rd[s]
+    T, al, b = prm[s, 0], prm[s, 2], prm[s, 3]
+    x, v = st[s, 0], st[s, 1]
+    j1 = min(1, n - 1)
+    tot = 0.0
+    for i in range(n):
+        zi = z[r, i]
+        if i < npoints:
+            x, v, _ = _point(z[r, 0], z[r, j1], z[r, 0], T, T, i)
+            x_p = zi
+            tot += zi
+        else:
+            d = det[q, i] != 0 if has_det else True
+            x_p, x, v = _step2(x, v, zi, d, T, al, b)
+            tot += zi if d else 0.0
+        if w[0]:
+            outs[0][s, i] = x_p
+        if w[1]:
+            outs[1][s, i] = x
+        if w[2]:
+            outs[2][s, i] = v
+    zs[s] = tot
+
+
+@njit(cache=True)
+def _block2(s0, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
+    """Series ``s0 .. s0 + 3`` of the batch, order 2, advanced together sample by sample."""
+    n = z.shape[1]
+    xp, xs, vs = outs
+    s1, s2, s3 = s0 + 1, s0 + 2, s0 + 3
+    r0, r1, r2, r3 = rz[s0], rz[s1], rz[s2], rz[s3]
+    q0, q1, q2, q3 = rd[s0], rd[s1], rd[s2], rd[s3]
+    T0, al0, b0 = prm[s0, 0], prm[s0, 2], prm[s0, 3]
+    T1, al1, b1 = prm[s1, 0], prm[s1, 2], prm[s1, 3]
+    T2, al2, b2 = prm[s2, 0], prm[s2, 2], prm[s2, 3]
+    T3, al3, b3 = prm[s3, 0], prm[s3, 2], prm[s3, 3]
+    x0, v0 = st[s0, 0], st[s0, 1]
+    x1, v1 = st[s1, 0], st[s1, 1]
+    x2, v2 = st[s2, 0], st[s2, 1]
+    x3, v3 = st[s3, 0], st[s3, 1]
+    t0 = t1 = t2 = t3 = 0.0
+    j1 = min(1, n - 1)
+    for i in range(npoints):
+        x0, v0, _ = _point(z[r0, 0], z[r0, j1], z[r0, 0], T0, T0, i)
+        x1, v1, _ = _point(z[r1, 0], z[r1, j1], z[r1, 0], T1, T1, i)
+        x2, v2, _ = _point(z[r2, 0], z[r2, j1], z[r2, 0], T2, T2, i)
+        x3, v3, _ = _point(z[r3, 0], z[r3, j1], z[r3, 0], T3, T3, i)
+        y0, y1, y2, y3 = z[r0, i], z[r1, i], z[r2, i], z[r3, i]
+        t0, t1, t2, t3 = t0 + y0, t1 + y1, t2 + y2, t3 + y3
+        _store4(xp, w[0], i, s0, y0, y1, y2, y3)
+        _store4(xs, w[1], i, s0, x0, x1, x2, x3)
+        _store4(vs, w[2], i, s0, v0, v1, v2, v3)
+    d0 = d1 = d2 = d3 = True
+    for i in range(npoints, n):
+        if has_det:
+            d0, d1, d2, d3 = det[q0, i] != 0, det[q1, i] != 0, det[q2, i] != 0, det[q3, i] != 0
+        y0, y1, y2, y3 = z[r0, i], z[r1, i], z[r2, i], z[r3, i]
+        p0, x0, v0 = _step2(x0, v0, y0, d0, T0, al0, b0)
+        p1, x1, v1 = _step2(x1, v1, y1, d1, T1, al1, b1)
+        p2, x2, v2 = _step2(x2, v2, y2, d2, T2, al2, b2)
+        p3, x3, v3 = _step2(x3, v3, y3, d3, T3, al3, b3)
+        if has_det:
+            t0 += y0 if d0 else 0.0
+            t1 += y1 if d1 else 0.0
+            t2 += y2 if d2 else 0.0
+            t3 += y3 if d3 else 0.0
+        else:
+            t0, t1, t2, t3 = t0 + y0, t1 + y1, t2 + y2, t3 + y3
+        _store4(xp, w[0], i, s0, p0, p1, p2, p3)
+        _store4(xs, w[1], i, s0, x0, x1, x2, x3)
+        _store4(vs, w[2], i, s0, v0, v1, v2, v3)
+    zs[s0], zs[s1], zs[s2], zs[s3] = t0, t1, t2, t3
+
+
+# Drivers: the series in blocks of LANES, the leftover series one by one; the ``_par``
+# twins hand the blocks to numba's thread pool (each block owns its rows: no races).
+# The arguments are those of _block3 / _block2 after the first.
+@njit(cache=True)
+def run3(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
+    nblk = rz.shape[0] // LANES
+    for k in range(nblk + rz.shape[0] % LANES):
+        if k < nblk:
+            _block3(k * LANES, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
+        else:
+            _one3(nblk * (LANES - 1) + k, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
+
+
+@njit(cache=True, parallel=True)
+def run3_par(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
+    nblk = rz.shape[0] // LANES
+    for k in prange(nblk + rz.shape[0] % LANES):
+        if k < nblk:
+            _block3(k * LANES, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
+        else:
+            _one3(nblk * (LANES - 1) + k, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
+
+
+@njit(cache=True)
+def run2(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
+    nblk = rz.shape[0] // LANES
+    for k in range(nblk + rz.shape[0] % LANES):
+        if k < nblk:
+            _block2(k * LANES, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
+        else:
+            _one2(nblk * (LANES - 1) + k, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
+
+
+@njit(cache=True, parallel=True)
+def run2_par(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
+    nblk = rz.shape[0] // LANES
+    for k in prange(nblk + rz.shape[0] % LANES):
+        if k < nblk:
+            _block2(k * LANES, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
+        else:
+            _one2(nblk * (LANES - 1) + k, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
