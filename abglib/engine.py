@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import functools
 import math
+import threading
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -35,6 +36,12 @@ _POINTS = {"zero": 0, "two_point": 2, "three_point": 3}
 _LANES = 4
 # below this many samples (series x n) the batched kernel runs on one thread
 _PARALLEL_SAMPLES = 1 << 16
+# one threaded kernel at a time in a process: numba's workqueue threading layer (the one
+# left where neither TBB nor OpenMP is present) aborts on concurrent parallel launches, and
+# two callers' threads would only oversubscribe the cores. A caller that finds it taken
+# (another thread of the process: Snakemake's in-process jobs) runs the serial kernel,
+# which gives bit-identical results.
+_PARALLEL_LOCK = threading.Lock()
 
 
 @dataclass(frozen=True, eq=False)
@@ -445,10 +452,18 @@ def _run_batched(order, given, operands, full, state0, npoints, has_det, buffers
     write = tuple(name in buffers for name in names)
     zs = np.empty(nser)
     # threads pay off only on enough work (their start-up costs ~ 10-100 microseconds)
-    parallel = nser >= 2 * _LANES and nser * n >= _PARALLEL_SAMPLES
-    _batch_kernel(order, parallel)(
-        z2, rz, prm, st, npoints, det, rd, has_det, tuple(views), write, zs
+    parallel = (
+        nser >= 2 * _LANES
+        and nser * n >= _PARALLEL_SAMPLES
+        and _PARALLEL_LOCK.acquire(blocking=False)
     )
+    try:
+        _batch_kernel(order, parallel)(
+            z2, rz, prm, st, npoints, det, rd, has_det, tuple(views), write, zs
+        )
+    finally:
+        if parallel:
+            _PARALLEL_LOCK.release()
     for buf, view in copy_back:
         buf[...] = view.reshape(full)
     if not np.isfinite(np.sum(zs)):
