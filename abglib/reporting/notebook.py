@@ -169,8 +169,8 @@ class Report:
         display(
             HTML(
                 f'<figure class="abg-figure" id="fig-{n}">'
-                f'<a href="figures/{name}"><img src="figures/{name}" alt="{html.escape(alt)}"'
-                ' loading="lazy"></a>'
+                f'<a href="figures/{name}"><img src="figures/{name}" alt="{html.escape(alt)}">'
+                "</a>"
                 f"<figcaption><b>Figure {n}.</b> {_caption(caption)}{made}</figcaption></figure>"
             )
         )
