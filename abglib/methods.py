@@ -341,19 +341,51 @@ def m5(z, alphas, dt=1.0, causal=False, memory=1) -> MethodResult:
         raise AbglibValueError(f"memory must be an integer >= 1, got {memory!r}")
     shape = (grid.size,) + (1,) * z.ndim
     bank = _pred(z, benedict_bordner(grid.reshape(shape)), dt)  # (K, ..., n)
-    err = np.abs(z - bank)
-    if causal:
-        # mean |innovation| over steps k-memory .. k-1 (fewer at the start; none at k=0)
-        csum = np.cumsum(err, axis=-1)
-        csum = np.concatenate([np.zeros(csum.shape[:-1] + (1,)), csum], axis=-1)
-        k = np.arange(z.shape[-1])
-        lo = np.maximum(k - memory, 0)
-        score = csum[..., k] - csum[..., lo]
-    else:
-        score = err
-    choice = np.argmin(score, axis=0)
-    xp = np.take_along_axis(bank, choice[None], axis=0)[0]
+    zb = np.ascontiguousarray(z.reshape(-1, z.shape[-1]))
+    xp, choice = np.empty(zb.shape), np.empty(zb.shape, dtype=np.intp)
+    bank = np.ascontiguousarray(bank.reshape((grid.size,) + zb.shape))
+    _m5_kernel()(zb, bank, bool(causal), int(memory), xp, choice)
+    xp, choice = xp.reshape(z.shape), choice.reshape(z.shape)
     return MethodResult(xp, choice)
+
+
+def _m5_select(z, bank, causal, memory, xp, choice):  # pragma: no cover (numba)
+    """M5's choice over the bank ``(K, b, n)`` for each row of ``z`` ``(b, n)``: the score
+    of the array form it replaced (``|z - x_pred|``, or its running sum over the previous
+    ``memory`` steps as a difference of cumulative sums), ``argmin`` as numpy's."""
+    k_n, nb, n = bank.shape
+    csum = np.empty((k_n, n + 1))
+    score = np.empty(k_n)
+    for b in range(nb):
+        if causal:
+            for q in range(k_n):
+                csum[q, 0] = 0.0
+                for i in range(n):
+                    csum[q, i + 1] = csum[q, i] + abs(z[b, i] - bank[q, b, i])
+        for i in range(n):
+            lo = max(i - memory, 0)
+            for q in range(k_n):
+                if causal:
+                    score[q] = csum[q, i] - csum[q, lo]
+                else:
+                    score[q] = abs(z[b, i] - bank[q, b, i])
+            best = 0
+            for q in range(k_n):
+                if np.isnan(score[q]):
+                    best = q
+                    break
+                if score[q] < score[best]:
+                    best = q
+            choice[b, i] = best
+            xp[b, i] = bank[best, b, i]
+
+
+@functools.cache
+def _m5_kernel():
+    """:func:`_m5_select` compiled by numba on first use (cached on disk, GIL released)."""
+    from numba import njit
+
+    return njit(cache=True, nogil=True)(_m5_select)
 
 
 # --------------------------------------------------------------------------- metrics

@@ -286,3 +286,38 @@ def test_m4_kernel_equals_the_array_form_bit_for_bit(shape, window, dt):
     xp, used = _m4_array_form(z, 0.1, window, grid, dt)
     np.testing.assert_array_equal(got.x_pred, xp)
     np.testing.assert_array_equal(got.param, used)
+
+
+def _m5_array_form(z, grid, dt, causal, memory):
+    """M5 as the array program it was before the numba kernel (the bit-for-bit reference)."""
+    from abglib.design import benedict_bordner
+    from abglib.engine import track
+
+    shape = (grid.size,) + (1,) * z.ndim
+    bb = benedict_bordner(grid.reshape(shape))
+    bank = track(z, bb, dt=dt, init="two_point", outputs=("x_pred",)).x_pred
+    err = np.abs(z - bank)
+    if causal:
+        csum = np.cumsum(err, axis=-1)
+        csum = np.concatenate([np.zeros(csum.shape[:-1] + (1,)), csum], axis=-1)
+        k = np.arange(z.shape[-1])
+        score = csum[..., k] - csum[..., np.maximum(k - memory, 0)]
+    else:
+        score = err
+    choice = np.argmin(score, axis=0)
+    return np.take_along_axis(bank, choice[None], axis=0)[0], choice
+
+
+@pytest.mark.parametrize(
+    "shape, causal, memory",
+    [((3, 4, 60), False, 1), ((80,), True, 1), ((5, 40), True, 3), ((2, 50), True, 70)],
+)
+def test_m5_kernel_equals_the_array_form_bit_for_bit(shape, causal, memory):
+    rng = np.random.default_rng(11)
+    z = np.cumsum(rng.standard_normal(shape), axis=-1) + rng.standard_normal(shape)
+    grid = np.linspace(0.05, 1.0, 20)
+    got = methods.m5(z, grid, 0.5, causal=causal, memory=memory)
+    xp, choice = _m5_array_form(z, grid, 0.5, causal, memory)
+    np.testing.assert_array_equal(got.x_pred, xp)
+    np.testing.assert_array_equal(got.param, choice)
+    assert got.param.dtype == choice.dtype
