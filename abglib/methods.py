@@ -28,6 +28,7 @@ rmse, percentage_change
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -249,37 +250,57 @@ def m4(z, alpha0, window, alpha_grid, dt=1.0) -> MethodResult:
         raise AbglibValueError(f"window must be an integer >= 1, got {window!r}")
     grid = _grid("alpha_grid", alpha_grid, 0.0, 1.0)
     bgrid = grid**2 / (2.0 - grid)
-    gshape = (grid.size,) + (1,) * (z.ndim - 1)
-    ga, gb = grid.reshape(gshape), bgrid.reshape(gshape)
-    n = z.shape[-1]
-    batch = z.shape[:-1]
-    xs, vs, xp = np.empty(z.shape), np.empty(z.shape), np.empty(z.shape)
-    used = np.full(z.shape, np.nan)
-    xs[..., 0], vs[..., 0], xp[..., 0] = z[..., 0], 0.0, z[..., 0]
-    xs[..., 1], vs[..., 1], xp[..., 1] = z[..., 1], (z[..., 1] - z[..., 0]) / dt, z[..., 1]
-    a = np.full(batch, a0)
-    b = np.full(batch, a0**2 / (2.0 - a0))
-    for k in range(2, n):
-        p = xs[..., k - 1] + dt * vs[..., k - 1]
-        r = z[..., k] - p
-        xp[..., k] = p
-        used[..., k] = a
-        xs[..., k] = p + a * r
-        vs[..., k] = vs[..., k - 1] + (b / dt) * r
-        s = k - window + 1
-        if s >= 2 and k + 1 < n:
-            x = np.broadcast_to(xs[..., s - 1], gshape[:1] + batch)
-            v = np.broadcast_to(vs[..., s - 1], gshape[:1] + batch)
-            cost = np.zeros(gshape[:1] + batch)
-            for j in range(s, k + 1):
-                pj = x + dt * v
-                rj = z[..., j] - pj
-                cost = cost + rj * rj
-                x = pj + ga * rj
-                v = v + (gb / dt) * rj
-            best = np.argmin(cost, axis=0)
-            a, b = grid[best], bgrid[best]
+    z2 = np.ascontiguousarray(z.reshape(-1, z.shape[-1]))
+    xp, used = np.empty(z2.shape), np.empty(z2.shape)
+    _m4_kernel()(z2, a0, a0**2 / (2.0 - a0), int(window), grid, bgrid, dt, xp, used)
+    xp, used = xp.reshape(z.shape), used.reshape(z.shape)
     return MethodResult(xp, used)
+
+
+def _m4_series(z, a0, b0, window, grid, bgrid, dt, xp, used):  # pragma: no cover (numba)
+    """M4 over each row of ``z`` (b, n), written into ``xp`` and ``used``: the arithmetic of
+    Algorithm 2 element by element, in the order of the array form it replaced (so the
+    results are the same bits); ``argmin`` as numpy's (first NaN, else first minimum)."""
+    nb, n = z.shape
+    g = grid.size
+    xs, vs, cost = np.empty(n), np.empty(n), np.empty(g)
+    for i in range(nb):
+        xs[0], vs[0], xp[i, 0], used[i, 0] = z[i, 0], 0.0, z[i, 0], np.nan
+        xs[1], vs[1], xp[i, 1], used[i, 1] = z[i, 1], (z[i, 1] - z[i, 0]) / dt, z[i, 1], np.nan
+        a, b = a0, b0
+        for k in range(2, n):
+            p = xs[k - 1] + dt * vs[k - 1]
+            r = z[i, k] - p
+            xp[i, k], used[i, k] = p, a
+            xs[k] = p + a * r
+            vs[k] = vs[k - 1] + (b / dt) * r
+            s = k - window + 1
+            if s >= 2 and k + 1 < n:
+                for q in range(g):
+                    x, v, c, gbd = xs[s - 1], vs[s - 1], 0.0, bgrid[q] / dt
+                    for j in range(s, k + 1):
+                        pj = x + dt * v
+                        rj = z[i, j] - pj
+                        c = c + rj * rj
+                        x = pj + grid[q] * rj
+                        v = v + gbd * rj
+                    cost[q] = c
+                best = 0
+                for q in range(g):
+                    if np.isnan(cost[q]):
+                        best = q
+                        break
+                    if cost[q] < cost[best]:
+                        best = q
+                a, b = grid[best], bgrid[best]
+
+
+@functools.cache
+def _m4_kernel():
+    """:func:`_m4_series` compiled by numba on first use (cached on disk, GIL released)."""
+    from numba import njit
+
+    return njit(cache=True, nogil=True)(_m4_series)
 
 
 # --------------------------------------------------------------------------- M5
@@ -320,19 +341,51 @@ def m5(z, alphas, dt=1.0, causal=False, memory=1) -> MethodResult:
         raise AbglibValueError(f"memory must be an integer >= 1, got {memory!r}")
     shape = (grid.size,) + (1,) * z.ndim
     bank = _pred(z, benedict_bordner(grid.reshape(shape)), dt)  # (K, ..., n)
-    err = np.abs(z - bank)
-    if causal:
-        # mean |innovation| over steps k-memory .. k-1 (fewer at the start; none at k=0)
-        csum = np.cumsum(err, axis=-1)
-        csum = np.concatenate([np.zeros(csum.shape[:-1] + (1,)), csum], axis=-1)
-        k = np.arange(z.shape[-1])
-        lo = np.maximum(k - memory, 0)
-        score = csum[..., k] - csum[..., lo]
-    else:
-        score = err
-    choice = np.argmin(score, axis=0)
-    xp = np.take_along_axis(bank, choice[None], axis=0)[0]
+    zb = np.ascontiguousarray(z.reshape(-1, z.shape[-1]))
+    xp, choice = np.empty(zb.shape), np.empty(zb.shape, dtype=np.intp)
+    bank = np.ascontiguousarray(bank.reshape((grid.size,) + zb.shape))
+    _m5_kernel()(zb, bank, bool(causal), int(memory), xp, choice)
+    xp, choice = xp.reshape(z.shape), choice.reshape(z.shape)
     return MethodResult(xp, choice)
+
+
+def _m5_select(z, bank, causal, memory, xp, choice):  # pragma: no cover (numba)
+    """M5's choice over the bank ``(K, b, n)`` for each row of ``z`` ``(b, n)``: the score
+    of the array form it replaced (``|z - x_pred|``, or its running sum over the previous
+    ``memory`` steps as a difference of cumulative sums), ``argmin`` as numpy's."""
+    k_n, nb, n = bank.shape
+    csum = np.empty((k_n, n + 1))
+    score = np.empty(k_n)
+    for b in range(nb):
+        if causal:
+            for q in range(k_n):
+                csum[q, 0] = 0.0
+                for i in range(n):
+                    csum[q, i + 1] = csum[q, i] + abs(z[b, i] - bank[q, b, i])
+        for i in range(n):
+            lo = max(i - memory, 0)
+            for q in range(k_n):
+                if causal:
+                    score[q] = csum[q, i] - csum[q, lo]
+                else:
+                    score[q] = abs(z[b, i] - bank[q, b, i])
+            best = 0
+            for q in range(k_n):
+                if np.isnan(score[q]):
+                    best = q
+                    break
+                if score[q] < score[best]:
+                    best = q
+            choice[b, i] = best
+            xp[b, i] = bank[best, b, i]
+
+
+@functools.cache
+def _m5_kernel():
+    """:func:`_m5_select` compiled by numba on first use (cached on disk, GIL released)."""
+    from numba import njit
+
+    return njit(cache=True, nogil=True)(_m5_select)
 
 
 # --------------------------------------------------------------------------- metrics

@@ -67,3 +67,18 @@ def test_new_variant_schedules_only_its_cells(tmp_path):
     assert bad.returncode != 0
     assert "variant 'typo'" in bad.stderr + bad.stdout
     assert "allowed: alpha" in bad.stderr + bad.stdout
+
+
+def test_regenerated_cell_datasets_are_shared_read_only_and_every_variant_runs_on_them():
+    from abglib.bench import benchmark as bm
+
+    cfg = yaml.safe_load((REPO / "config.yaml").read_text())
+    large = yaml.safe_load((REPO / "config" / "benchmark_large.yaml").read_text())
+    spec = cfg["datasets"]["scenarios"]["alwagih_w1"]
+    a = bm.cell_dataset(None, "alwagih_w1", spec, runs=20, seed=3)
+    assert bm.cell_dataset(None, "alwagih_w1", spec, runs=20, seed=3) is a
+    assert bm.cell_dataset(None, "alwagih_w1", spec, runs=21, seed=3) is not a
+    assert not a.z[a.coords[0]].flags.writeable
+    variants = {**cfg["benchmark"]["variants"], **large["benchmark"]["variants"]}
+    for name, v in variants.items():
+        bm.run_cell(a, v, name)  # a write into the shared dataset would raise here

@@ -240,3 +240,84 @@ def test_bad_input_raises_naming_the_value(call, match):
     z, _ = _series()
     with pytest.raises(AbglibValueError, match=match):
         call(z)
+
+
+def _m4_array_form(z, alpha0, window, grid, dt):
+    """M4 as the array program it was before the numba kernel (the bit-for-bit reference)."""
+    bgrid = grid**2 / (2.0 - grid)
+    gshape = (grid.size,) + (1,) * (z.ndim - 1)
+    ga, gb = grid.reshape(gshape), bgrid.reshape(gshape)
+    n, batch = z.shape[-1], z.shape[:-1]
+    xs, vs, xp = np.empty(z.shape), np.empty(z.shape), np.empty(z.shape)
+    used = np.full(z.shape, np.nan)
+    xs[..., 0], vs[..., 0], xp[..., 0] = z[..., 0], 0.0, z[..., 0]
+    xs[..., 1], vs[..., 1], xp[..., 1] = z[..., 1], (z[..., 1] - z[..., 0]) / dt, z[..., 1]
+    a, b = np.full(batch, alpha0), np.full(batch, alpha0**2 / (2.0 - alpha0))
+    for k in range(2, n):
+        p = xs[..., k - 1] + dt * vs[..., k - 1]
+        r = z[..., k] - p
+        xp[..., k], used[..., k] = p, a
+        xs[..., k] = p + a * r
+        vs[..., k] = vs[..., k - 1] + (b / dt) * r
+        s = k - window + 1
+        if s >= 2 and k + 1 < n:
+            x = np.broadcast_to(xs[..., s - 1], gshape[:1] + batch)
+            v = np.broadcast_to(vs[..., s - 1], gshape[:1] + batch)
+            cost = np.zeros(gshape[:1] + batch)
+            for j in range(s, k + 1):
+                pj = x + dt * v
+                rj = z[..., j] - pj
+                cost = cost + rj * rj
+                x = pj + ga * rj
+                v = v + (gb / dt) * rj
+            best = np.argmin(cost, axis=0)
+            a, b = grid[best], bgrid[best]
+    return xp, used
+
+
+@pytest.mark.parametrize(
+    "shape, window, dt", [((3, 4, 60), 10, 0.5), ((80,), 1, 2.0), ((5, 40), 7, 1.0)]
+)
+def test_m4_kernel_equals_the_array_form_bit_for_bit(shape, window, dt):
+    rng = np.random.default_rng(7)
+    z = np.cumsum(rng.standard_normal(shape), axis=-1) + rng.standard_normal(shape)
+    grid = np.linspace(0.05, 1.0, 20)
+    got = methods.m4(z, 0.1, window, grid, dt)
+    xp, used = _m4_array_form(z, 0.1, window, grid, dt)
+    np.testing.assert_array_equal(got.x_pred, xp)
+    np.testing.assert_array_equal(got.param, used)
+
+
+def _m5_array_form(z, grid, dt, causal, memory):
+    """M5 as the array program it was before the numba kernel (the bit-for-bit reference)."""
+    from abglib.design import benedict_bordner
+    from abglib.engine import track
+
+    shape = (grid.size,) + (1,) * z.ndim
+    bb = benedict_bordner(grid.reshape(shape))
+    bank = track(z, bb, dt=dt, init="two_point", outputs=("x_pred",)).x_pred
+    err = np.abs(z - bank)
+    if causal:
+        csum = np.cumsum(err, axis=-1)
+        csum = np.concatenate([np.zeros(csum.shape[:-1] + (1,)), csum], axis=-1)
+        k = np.arange(z.shape[-1])
+        score = csum[..., k] - csum[..., np.maximum(k - memory, 0)]
+    else:
+        score = err
+    choice = np.argmin(score, axis=0)
+    return np.take_along_axis(bank, choice[None], axis=0)[0], choice
+
+
+@pytest.mark.parametrize(
+    "shape, causal, memory",
+    [((3, 4, 60), False, 1), ((80,), True, 1), ((5, 40), True, 3), ((2, 50), True, 70)],
+)
+def test_m5_kernel_equals_the_array_form_bit_for_bit(shape, causal, memory):
+    rng = np.random.default_rng(11)
+    z = np.cumsum(rng.standard_normal(shape), axis=-1) + rng.standard_normal(shape)
+    grid = np.linspace(0.05, 1.0, 20)
+    got = methods.m5(z, grid, 0.5, causal=causal, memory=memory)
+    xp, choice = _m5_array_form(z, grid, 0.5, causal, memory)
+    np.testing.assert_array_equal(got.x_pred, xp)
+    np.testing.assert_array_equal(got.param, choice)
+    assert got.param.dtype == choice.dtype

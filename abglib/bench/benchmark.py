@@ -11,6 +11,7 @@ the noise-versus-lag points of each design family.
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
@@ -292,12 +293,53 @@ def tradeoff_sweep(
     )
 
 
+#: Bytes of regenerated datasets :func:`cell_dataset` keeps in the process for the next
+#: cells of the same scenario (the cells of a sweep run as threads of one process).
+DATASET_CACHE_BYTES = 2_000_000_000
+
+_dataset_cache: dict = {}  # key -> Dataset, oldest first
+_dataset_locks: dict = {}  # key -> Lock: one generation per key, the other threads wait
+_cache_lock = threading.Lock()
+
+
+def _dataset_bytes(ds) -> int:
+    return sum(
+        a.nbytes for d in (ds.truth_pos, ds.truth_vel, ds.truth_acc, ds.z) for a in d.values()
+    )
+
+
+def _read_only(ds):
+    for d in (ds.truth_pos, ds.truth_vel, ds.truth_acc, ds.z):
+        for a in d.values():
+            a.setflags(write=False)
+    return ds
+
+
 def cell_dataset(parquet, scenario: str, spec: Mapping, runs=None, seed=None):
     """The dataset of one benchmark cell: the stored Parquet file, or, when the config
     overrides the Monte Carlo size (``benchmark.runs``), the scenario regenerated from its
-    spec with that many runs and the seed ``seed``."""
+    spec with that many runs and the seed ``seed``.
+
+    A regenerated dataset is kept (read-only, up to :data:`DATASET_CACHE_BYTES`, least
+    recently used dropped first) for the other cells of the scenario in this process: the
+    same spec, runs and seed give the same dataset, so it is generated once per scenario."""
+    import json
+
     from . import datasets
 
-    if runs:
-        return datasets.generate(scenario, {**spec, "runs": int(runs)}, seed=int(seed))
-    return datasets.read(parquet)
+    if not runs:
+        return datasets.read(parquet)
+    key = (scenario, json.dumps(dict(spec), sort_keys=True, default=str), int(runs), int(seed))
+    with _cache_lock:
+        lock = _dataset_locks.setdefault(key, threading.Lock())
+    with lock:
+        with _cache_lock:
+            if key in _dataset_cache:
+                _dataset_cache[key] = _dataset_cache.pop(key)  # most recently used last
+                return _dataset_cache[key]
+        ds = _read_only(datasets.generate(scenario, {**spec, "runs": int(runs)}, seed=int(seed)))
+        with _cache_lock:
+            _dataset_cache[key] = ds
+            while sum(map(_dataset_bytes, _dataset_cache.values())) > DATASET_CACHE_BYTES:
+                _dataset_cache.pop(next(iter(_dataset_cache)))
+        return ds

@@ -818,3 +818,17 @@ def test_stability_edges_written_at_their_precision(s):
     assert s.stability.attrs["precision"] == {"lower": EDGE_DIGITS, "upper": EDGE_DIGITS}
     lo = s.stability_of("p_a")["lower"]
     assert value(s, "appH.p_a_lower") == float(f"{lo:.{EDGE_DIGITS}g}")
+
+
+def test_simulate_phases_reuses_the_object_states_read_only(s):
+    from abglib.replications.antenna.ensemble import phase_states, snap
+
+    kw = dict(amplitude=10.0, omega=0.1, n_steps=200, phases=phase_grid(3), mode="kalman")
+    kw.update(order=3, v_w=5e-10, v_v=s.vv)
+    a = simulate_phases(s.params, s.ctrl, **kw)
+    b = simulate_phases(s.params, s.ctrl, **kw)
+    assert a["z"].base is b["z"].base and not a["z"].flags.writeable
+    t = np.arange(200) * s.ctrl.dt
+    order = a["xt_err"].shape[1] - 1
+    xt = snap(phase_states(10.0, 0.1, t, order, phase_grid(3)))
+    np.testing.assert_array_equal(a["z"], xt[:, 0])

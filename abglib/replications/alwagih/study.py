@@ -360,26 +360,26 @@ class AlwagihStudy(Study):
         ``alwagih`` section (the sensitivity sweep)."""
         cfg = self.cfg if cfg is None else cfg
         settings = _key({k: cfg[k] for k in METHOD_SETTINGS[method]})
-        frames = []
+        labels, values = [], []
         for noise, specs in self.scenarios.items():
             for e, (name, spec) in enumerate(specs, start=1):
                 sj = _key(spec)
                 for c in sorted(spec["tracks"]):
-                    r = _rmse(name, sj, c, method, settings)
-                    frames.append(
-                        pd.DataFrame(
-                            {
-                                "noise": noise,
-                                "experiment": e,
-                                "scenario": name,
-                                "coord": c.upper(),
-                                "method": method,
-                                "run": np.arange(r.size),
-                                "rmse": r,
-                            }
-                        )
-                    )
-        return pd.concat(frames, ignore_index=True)
+                    values.append(_rmse(name, sj, c, method, settings))
+                    labels.append((noise, e, name, c.upper()))
+        sizes = [r.size for r in values]
+        names = ("noise", "experiment", "scenario", "coord")
+        table = {
+            k: np.repeat(np.array([lab[i] for lab in labels]), sizes) for i, k in enumerate(names)
+        }
+        return pd.DataFrame(
+            table
+            | {
+                "method": method,
+                "run": np.concatenate([np.arange(n) for n in sizes]),
+                "rmse": np.concatenate(values),
+            }
+        )
 
     @cached_property
     def paper_rmse(self) -> pd.DataFrame:

@@ -51,6 +51,16 @@ def phase_states(amplitude, omega, t, order: int, phases) -> np.ndarray:
     return amplitude * omega**j * np.sin(omega * t[None, None, :] + ph + j * np.pi / 2.0)
 
 
+@lru_cache(maxsize=64)
+def _snapped_states(amplitude, omega, n_steps, dt, order, phases, shape):
+    """``snap(phase_states(...))`` at ``t = k dt``, memoised (read-only): a robustness sweep
+    simulates the same object track under many designs."""
+    t = np.arange(n_steps) * dt
+    xt = snap(phase_states(amplitude, omega, t, order, np.frombuffer(phases).reshape(shape)))
+    xt.setflags(write=False)
+    return xt
+
+
 @lru_cache(maxsize=512)
 def _filter(a, b, c, n, order, dt, v_w, vv):
     """Kalman predictor matrices (A - Kf M, Kf, B) of one design, memoised: the object model
@@ -214,7 +224,8 @@ def simulate_phases(
     kt = snap(preview_gain(ctrl.tm, at, ct)[0])
     k = snap(ctrl.tm.K[0])
     t = np.arange(n_steps) * dt
-    xt = snap(phase_states(amplitude, w, t, p - 1, phases))
+    ph = np.ascontiguousarray(phases, dtype=float)
+    xt = _snapped_states(float(amplitude), w, n_steps, dt, p - 1, ph.tobytes(), ph.shape)
     n_ph = xt.shape[0]
     y = np.empty((n_ph, n_steps))
     u = np.empty((n_ph, n_steps))

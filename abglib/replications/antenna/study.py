@@ -11,6 +11,8 @@ another value of one input pays only for what it uses. Chapter pieces live in
 
 from __future__ import annotations
 
+import json
+from collections import OrderedDict
 from functools import cached_property
 
 import numpy as np
@@ -43,6 +45,24 @@ from .study_exact import (
 __all__ = ["PARAMETER_BASIS", "AntennaStudy", "TABLES"]
 
 #: Table stems of ``results/antenna/`` (besides ``comparison`` and ``robustness``).
+#: Simulation and spectral-radius results of every study in the process, per context (the
+#: inputs they depend on besides their own key): the claims' robustness sweep builds the
+#: study at other assumed inputs, most of which leave a given run unchanged.
+_SHARED: OrderedDict = OrderedDict()
+_SHARED_CONTEXTS = 64
+
+
+def _shared(context) -> dict:
+    """The memo of one context (least recently used contexts dropped)."""
+    if context in _SHARED:
+        _SHARED.move_to_end(context)
+    else:
+        _SHARED[context] = {}
+        while len(_SHARED) > _SHARED_CONTEXTS:
+            _SHARED.popitem(last=False)
+    return _SHARED[context]
+
+
 TABLES = (
     "parameters",
     "checks",
@@ -223,7 +243,12 @@ class AntennaStudy(Study):
     # ----------------------------------------------------------------- ch. 8
     @cached_property
     def _runs(self) -> dict:
-        return {}
+        # everything stats() reads besides its key
+        k = self.cfg["kalman"]
+        sim = json.dumps(self.sim, sort_keys=True, default=str)
+        context = ("runs", self.params, self.dt, self.q, self.q_high, self.r, sim)
+        context += (self.phases.tobytes(), self.vv.tobytes(), float(k["vw_scale"]))
+        return _shared(context)
 
     def stats(
         self, order, v_w, weight="q", omega=None, amplitude=None, keep=False, resolution=None
@@ -318,7 +343,9 @@ class AntennaStudy(Study):
 
     @cached_property
     def _radii(self) -> dict:
-        return {}
+        # everything radius() reads besides its key
+        vw = self.vw_filter(self.vw_opt5)
+        return _shared(("radii", self.params, self.dt, self.q, self.r, vw, self.vv.tobytes()))
 
     def radius(self, name: str, factor: float) -> float:
         """Spectral radius of the loop designed with ``name`` x ``factor`` (memoised)."""

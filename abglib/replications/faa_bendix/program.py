@@ -25,7 +25,7 @@ import numpy as np
 import pandas as pd
 
 from ..._checks import AbglibValueError, check_in_range, check_positive
-from ...analysis import is_stable, poles, steady_state_lag, vrf
+from ...analysis import is_stable, poles, steady_state_lag, vrf, vrf_benedict_ab
 from ...engine import track
 from ...gains import Gains
 from ...simulate import bendix_impulse, bendix_ramp, rng_from
@@ -41,6 +41,7 @@ __all__ = [
     "monte_carlo_ratios",
     "responses",
     "rounding_box",
+    "rounding_extremes",
     "power_of_ten_scale",
     "run_test_program",
     "simulated_lags",
@@ -301,6 +302,62 @@ def rounding_box(alpha: float, beta: float, T: float, half_unit: float = 5e-4, n
             "velocity": np.sqrt(np.asarray(v["v_smooth"])).ravel(),
         }
     )
+
+
+#: Relative band around an extreme of the closed-form screen inside which
+#: :func:`rounding_extremes` solves the Lyapunov equation exactly; the closed forms agree
+#: with the exact VRFs to ~1e-15 relative (tests/replications/test_faa_bendix_program.py).
+SCREEN_BAND = 1e-9
+
+
+def _screen(values, lowest: bool):
+    """Indices (ascending) whose value is within :data:`SCREEN_BAND` of the extreme."""
+    v = np.asarray(values)
+    ext = v.min() if lowest else v.max()
+    band = SCREEN_BAND * max(abs(ext), 1e-300)
+    return np.flatnonzero(v <= ext + band) if lowest else np.flatnonzero(v >= ext - band)
+
+
+def rounding_extremes(alpha, beta, T, printed, tolerances, half_unit=5e-4, n=101) -> dict:
+    """What :func:`rounding_box` is read for, without solving every grid point exactly.
+
+    The ratio ranges over the box and the pair that best reproduces both ``printed``
+    ratios (``(position, velocity)``, within ``tolerances``): the closed forms
+    (:func:`abglib.analysis.vrf_benedict_ab`) screen the grid, and only the points within
+    :data:`SCREEN_BAND` of each extreme are solved exactly (:func:`abglib.analysis.vrf`),
+    so the result is that of the exact box, first index on ties included.
+    """
+    h = float(check_positive("half_unit", half_unit))
+    a = np.linspace(alpha - h, alpha + h, int(n))
+    b = np.linspace(beta - h, beta + h, int(n))
+    A, B = (x.ravel() for x in np.meshgrid(a, b, indexing="ij"))
+    cf = vrf_benedict_ab(Gains(A, B), dt=T)
+    ratio = {"position": np.sqrt(cf["x_smooth"]), "velocity": np.sqrt(cf["v_smooth"])}
+
+    def worst_of(pos, vel):
+        ex = np.abs(pos - float(printed[0])) / tolerances[0]
+        return np.maximum(ex, np.abs(vel - float(printed[1])) / tolerances[1])
+
+    picks = [_screen(ratio[k], low) for k in ratio for low in (True, False)]
+    picks.append(_screen(worst_of(ratio["position"], ratio["velocity"]), True))
+    idx = np.unique(np.concatenate(picks))
+    v = vrf(Gains(A[idx], B[idx]), dt=T)
+    pos, vel = np.sqrt(np.asarray(v["x_smooth"])), np.sqrt(np.asarray(v["v_smooth"]))
+    worst = worst_of(pos, vel)
+    out = {}
+    for i, (k, vals) in enumerate((("position", pos), ("velocity", vel))):
+        out[f"{k}_min"] = vals[np.isin(idx, picks[2 * i])].min()
+        out[f"{k}_max"] = vals[np.isin(idx, picks[2 * i + 1])].max()
+    cand = np.isin(idx, picks[4])
+    j = np.flatnonzero(cand)[int(np.argmin(worst[cand]))]
+    out.update(
+        best_alpha=A[idx[j]],
+        best_beta=B[idx[j]],
+        best_position=pos[j],
+        best_velocity=vel[j],
+        best_worst=float(worst[cand].min()),
+    )
+    return out
 
 
 # --------------------------------------------------------------------------- beyond

@@ -223,27 +223,22 @@ class FaaBendixStudy(Study):
                 tolerance_from_printed(m["alpha_printed"]),
                 tolerance_from_printed(m["beta_printed"]),
             )
-            box = bendix.rounding_box(
-                m["alpha"], m["beta"], p, half_unit=half, n=int(self.cfg["rounding_grid"])
-            )
             px, pv = self.printed(f"memo.T{p}.position"), self.printed(f"memo.T{p}.velocity")
-            ex = np.abs(box["position"] - float(px)) / tolerance_from_printed(px)
-            ev = np.abs(box["velocity"] - float(pv)) / tolerance_from_printed(pv)
-            worst = np.maximum(ex, ev).to_numpy()
-            best = box.iloc[int(np.argmin(worst))]
+            r = bendix.rounding_extremes(
+                m["alpha"],
+                m["beta"],
+                p,
+                (px, pv),
+                (tolerance_from_printed(px), tolerance_from_printed(pv)),
+                half_unit=half,
+                n=int(self.cfg["rounding_grid"]),
+            )
+            best_worst = r.pop("best_worst")
             rows.append(
-                {
-                    "period_s": p,
-                    "position_min": box["position"].min(),
-                    "position_max": box["position"].max(),
-                    "velocity_min": box["velocity"].min(),
-                    "velocity_max": box["velocity"].max(),
-                    "best_alpha": best["alpha"],
-                    "best_beta": best["beta"],
-                    "best_position": best["position"],
-                    "best_velocity": best["velocity"],
-                    "best_worst_error_in_tolerances": float(worst.min()),
-                    "both_reproduced": bool(worst.min() <= 1.0),
+                {"period_s": p, **r}
+                | {
+                    "best_worst_error_in_tolerances": best_worst,
+                    "both_reproduced": bool(best_worst <= 1.0),
                 }
             )
         return pd.DataFrame(rows)
