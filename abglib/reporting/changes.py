@@ -48,6 +48,7 @@ from pathlib import Path
 import pandas as pd
 
 from .._checks import AbglibValueError
+from .compare import within_tolerance
 
 __all__ = [
     "CHANGES_COLUMNS",
@@ -88,7 +89,6 @@ _PASSES = [
     (("quantity", "published"), "paired by quantity and printed value (the item was renamed)"),
 ]
 _REQUIRED = ["item", "quantity", "published", "reproduced", "verdict"]
-_TOL_SLACK = 1e-9  # as in compare.verdict: half a unit, computed in binary, is not a move
 
 
 @dataclass
@@ -217,7 +217,7 @@ def _move(old: str, new: str, tol: str) -> tuple[bool, str]:
     delta = y - x
     if t is None or t <= 0:
         return delta != 0, f"moved by {delta:.3g}"
-    moved = abs(delta) > t * (1 + _TOL_SLACK)
+    moved = not within_tolerance(x, y, t)
     return moved, f"moved by {delta:.3g} ({abs(delta) / t:.3g} tolerances of {t:g})"
 
 

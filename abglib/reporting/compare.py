@@ -321,6 +321,13 @@ class Alternative:
 
 
 # --------------------------------------------------------------------------- verdicts
+def within_tolerance(a: float, b: float, tolerance: float) -> bool:
+    """Whether ``a`` and ``b`` differ by at most ``tolerance`` (with the binary slack
+    ``_TOL_SLACK``, so that an error of exactly half a unit in the last digit counts as
+    within): the one rule of a match and of a value that did not move."""
+    return abs(float(a) - float(b)) <= tolerance * (1.0 + _TOL_SLACK)
+
+
 def verdict(published, reproduced, tolerance, alternatives: Iterable[Alternative] = ()):
     """Verdict and the explaining alternative (or None) for one row.
 
@@ -346,11 +353,10 @@ def verdict(published, reproduced, tolerance, alternatives: Iterable[Alternative
     if not str(published).strip():
         return ("match" if _as_bool(reproduced) else "mismatch"), None
     pub = float(parse_printed(published))
-    limit = tolerance * (1.0 + _TOL_SLACK)
-    if abs(float(reproduced) - pub) <= limit:
+    if within_tolerance(reproduced, pub, tolerance):
         return "match", None
     for alt in alternatives:
-        if not _is_missing(alt.value) and abs(float(alt.value) - pub) <= limit:
+        if not _is_missing(alt.value) and within_tolerance(alt.value, pub, tolerance):
             return "explained", alt
     return "mismatch", None
 
