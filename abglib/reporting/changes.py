@@ -371,11 +371,12 @@ def previous_version(releases, version: str) -> Path | None:
 
 
 # ------------------------------------------------------------------------------ writing
+#: the page's own rules (change kinds, plain tables); fonts and the verdict badges come
+#: from the version's shared stylesheet (assets/report.css), as on every other page
 _CSS = """
-body { font-family: system-ui, sans-serif; max-width: 72em; margin: 1.5em auto; padding: 0 1em;
-  line-height: 1.45; color: #222; }
+body { max-width: 72em; }
 nav a { margin-right: 1em; }
-table { border-collapse: collapse; width: 100%; table-layout: auto; }
+table { border-collapse: collapse; width: 100%; table-layout: auto; font-size: .85rem; }
 td, th { border: 1px solid #ccc; padding: .2em .5em; vertical-align: top; text-align: left; }
 th { background: #f0f0f0; } td.num { text-align: right; white-space: nowrap; }
 td.note { overflow-wrap: anywhere; } td.item { min-width: 12em; }
@@ -387,12 +388,8 @@ tr.k-verdict > td:first-child { border-left: .5em solid #e8a33d; }
 tr.k-moved > td:first-child { border-left: .5em solid #e6c84a; }
 tr.k-added > td:first-child { border-left: .5em solid #6cbf6c; }
 tr.k-removed > td:first-child { border-left: .5em solid #d46a6a; }
-summary { padding-left: .3em; border-radius: .2em; }
-.v { padding: 0 .3em; border-radius: .2em; white-space: nowrap; }
-.v-match { background: #cdebcd; } .v-mismatch { background: #f3c4c4; }
-.v-explained { background: #cfe0f5; } .v-not_reproducible { background: #e2e2e2; }
 caption, summary { text-align: left; font-weight: bold; padding: .3em 0; }
-summary { cursor: pointer; margin-top: .6em; }
+summary { cursor: pointer; margin-top: .6em; padding-left: .3em; border-radius: .2em; }
 """
 
 _KIND_TEXT = {
@@ -409,6 +406,7 @@ def _page(ch: Changes, title: str, body: str) -> str:
 <html lang="en">
 <head><meta charset="utf-8"><meta name="viewport" content="width=device-width, initial-scale=1">
 <title>{esc(title)}</title>
+<link rel="stylesheet" href="assets/report.css">
 <style>{_CSS}</style></head>
 <body>
 <nav><a href="index.html">← all reports of this version</a>
@@ -503,8 +501,13 @@ def no_previous_html(version: str, releases: str) -> str:
 def write_changes(ch: Changes | None, csv_path, html_path, links=None, **no_previous) -> None:
     """Write ``changes.csv`` and ``changes.html`` atomically; ``ch=None`` writes the page
     saying there is no previous version (``no_previous``: ``version``, ``releases``)."""
-    from .render import write_text
+    from .render import write_assets, write_text
 
+    # the page sits at a version folder's top, beside assets/ (a build's report_assets
+    # rule writes them; a folder of `abglib changes --out` gets its own copy)
+    assets = Path(html_path).parent / "assets"
+    if not (assets / "report.css").is_file():
+        write_assets(assets)
     table = ch.table if ch is not None else pd.DataFrame(columns=CHANGES_COLUMNS)
     write_text(csv_path, table.to_csv(index=False, lineterminator="\n"))
     page = changes_html(ch, links) if ch is not None else no_previous_html(**no_previous)

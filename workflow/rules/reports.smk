@@ -77,6 +77,7 @@ CHANGES_PREVIOUS = previous_version(Path(workflow.basedir) / "reports", VERSION)
 
 rule changes:
     input:
+        assets=rules.report_assets.output,
         comparisons=expand("results/{doc}/comparison.csv", doc=DOCS),
         previous=(
             [str(p) for p in comparison_tables(CHANGES_PREVIOUS).values()]
