@@ -13,32 +13,26 @@ LEAGUE = pd.DataFrame(
         "family": ["M", "A", "A", "B", "B", "A", "X"],
         "diverged": [False, False, False, False, False, False, True],
         "noise_colour": ["white"] * 4 + ["ar1"] * 3,
-        # rmse_x_pred orders the ranks (10 < 12 < 12.5 < 15; 4 < 5); rmse_x_smooth does not
+        # the ranks follow rmse_x_pred (10 < 12 < 12.5 < 15; 4 < 5), not rmse_x_smooth
         "rmse_x_pred": [10.0, 12.0, 12.5, 15.0, 4.0, 5.0, float("nan")],
         "rmse_x_smooth": [9.0, 8.0, 13.0, 14.0, 3.0, 6.0, float("nan")],
     }
 )
 
 
-def test_ranking_metric_is_the_column_that_orders_the_ranks():
-    assert findings.ranking_metric(LEAGUE) == "rmse_x_pred"
-    with pytest.raises(ValueError, match="no metric column"):
-        findings.ranking_metric(LEAGUE.drop(columns="rmse_x_pred"))
-    # a variant without the metric (NaN) ranked after those with it does not disqualify it
-    smooth = LEAGUE.drop(columns="rmse_x_pred").assign(
-        rmse_x_smooth=[9, 10, 13, float("nan"), 3, 6, 1]
-    )
-    assert findings.ranking_metric(smooth) == "rmse_x_smooth"
-
-
 def test_leaders_and_margin_over_the_best_other_family():
-    lead = findings.leaders(LEAGUE, exclude=["m5"]).set_index("scenario")
+    lead = findings.leaders(LEAGUE, "rmse_x_pred", exclude=["m5"]).set_index("scenario")
     # s1 without m5: a1 (A, 12) leads; the best other family is B at 15: 25 % worse
     assert lead.loc["s1", "leader"] == "a1" and lead.loc["s1", "runner_up"] == "b1"
     assert lead.loc["s1", "margin"] == pytest.approx(15 / 12 - 1)
     # s2: the diverged x is left out; b1 leads a1 by 5/4 - 1
     assert lead.loc["s2", "family"] == "B" and lead.loc["s2", "margin"] == pytest.approx(0.25)
-    assert findings.leaders(LEAGUE).set_index("scenario").loc["s1", "leader"] == "m5"
+    # ranked by rmse_x_smooth instead: a1 (8) still leads s1, on its own value
+    other = findings.leaders(LEAGUE, "rmse_x_smooth", exclude=["m5"]).set_index("scenario")
+    assert other.loc["s1", "leader"] == "a1" and other.loc["s1", "value"] == 8.0
+    with pytest.raises(ValueError, match="rmse_nope"):
+        findings.leaders(LEAGUE, "rmse_nope")
+    assert findings.leaders(LEAGUE, "rmse_x_pred").set_index("scenario").loc["s1", "leader"] == "m5"
 
 
 def test_tradeoff_extremes():

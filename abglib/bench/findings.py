@@ -1,6 +1,5 @@
 """The benchmark report's findings, computed from its tables (the notebook only formats them).
 
-- :func:`ranking_metric`: which metric column the league is ranked by;
 - :func:`leaders`: per scenario, the leading variant and family, the best other family
   and the margin between them;
 - :func:`tradeoff_extremes`: per scenario, the least noisy and the least lagging variant
@@ -13,10 +12,9 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-import numpy as np
 import pandas as pd
 
-__all__ = ["leaders", "peer_disagreements", "ranking_metric", "tradeoff_extremes"]
+__all__ = ["leaders", "peer_disagreements", "tradeoff_extremes"]
 
 
 def _ranked(league: pd.DataFrame) -> pd.DataFrame:
@@ -24,38 +22,8 @@ def _ranked(league: pd.DataFrame) -> pd.DataFrame:
     return league[~diverged]
 
 
-def ranking_metric(league: pd.DataFrame) -> str:
-    """The metric column (``rmse_*`` or ``max_*``) whose ascending order is the league's
-    ``rank`` in every scenario (diverged variants excluded; variants without the metric,
-    e.g. adaptive methods without a smoothed output, must come after those with it).
-    When several columns order every scenario alike, the first in the table's order.
-
-    Raises
-    ------
-    ValueError
-        If no column orders every scenario as ``rank`` does.
-    """
-    live = _ranked(league)
-    candidates = [c for c in league.columns if c.startswith(("rmse_", "max_"))]
-    found = []
-    for col in candidates:
-        ok = True
-        for _, d in live.groupby("scenario", sort=False):
-            values = d.sort_values("rank")[col].to_numpy(dtype=float)
-            have = ~np.isnan(values)
-            n = int(have.sum())
-            if n == 0 or not have[:n].all() or (np.diff(values[:n]) < 0).any():
-                ok = False
-                break
-        if ok:
-            found.append(col)
-    if not found:
-        raise ValueError(f"no metric column of {candidates} orders the league as its rank does")
-    return found[0]
-
-
 def leaders(
-    league: pd.DataFrame, metric: str | None = None, exclude: Iterable[str] = ()
+    league: pd.DataFrame, metric: str, exclude: Iterable[str] = ()
 ) -> pd.DataFrame:
     """Per scenario: the leader, the best variant of another family, and the margin.
 
@@ -63,8 +31,9 @@ def leaders(
     ----------
     league : DataFrame
         ``league.csv`` (columns ``scenario, rank, variant, family, diverged`` and metrics).
-    metric : str, optional
-        Metric to compare (default: :func:`ranking_metric`).
+    metric : str
+        Metric to compare: the league's ``benchmark.rank_by`` (the report gets it from
+        the config; it is not inferred from the ranks).
     exclude : iterable of str
         Variants left out (e.g. one that is not a realisable predictor).
 
@@ -75,7 +44,8 @@ def leaders(
         runner_up_family, runner_up_value, margin`` where ``margin`` is
         ``runner_up_value / value - 1`` (0.25 = the next family is 25 % worse).
     """
-    metric = metric or ranking_metric(league)
+    if metric not in league.columns:
+        raise ValueError(f"metric must be a column of the league, got {metric!r}")
     live = _ranked(league)
     live = live[~live["variant"].isin(list(exclude)) & live[metric].notna()]
     rows = []

@@ -163,11 +163,14 @@ def render_notebook(
     write_text(html_path, body)
 
 
-def report_context(doc, version, input, output, *, repo, nav, made_by, provenance):
+def report_context(
+    doc, version, input, output, *, repo, nav, made_by, provenance, settings=None
+):
     """The notebook's parameters and the page's arguments of one report rule.
 
     ``input`` has ``notebook``, ``figures`` and ``tables`` (what upstream rules wrote);
-    ``output`` the ``figures`` and ``tables`` copied beside the page.
+    ``output`` the ``figures`` and ``tables`` copied beside the page. ``settings``: config
+    values the notebook states (e.g. the benchmark's ``rank_by``), passed as they are.
     """
     figures = {Path(p).stem: str(p) for p in input.figures}
     tables = {Path(p).stem: str(p) for p in input.tables}
@@ -180,6 +183,7 @@ def report_context(doc, version, input, output, *, repo, nav, made_by, provenanc
         "made_by": dict(made_by),
         "notebook": notebook,
         "provenance": provenance,
+        "settings": dict(settings or {}),
     }
     page = {
         "doc": doc,

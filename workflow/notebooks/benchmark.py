@@ -36,6 +36,7 @@ tables = {
 provenance = None
 made_by = {}
 notebook = "workflow/notebooks/benchmark.py"
+settings = {"rank_by": "rmse_x_pred"}  # config.yaml benchmark.rank_by
 
 # %%
 import pandas as pd
@@ -71,7 +72,7 @@ display(
 # Formatted from the league, trade-off and peers tables by `abglib.bench.findings`.
 
 # %%
-metric = findings.ranking_metric(league)
+metric = settings["rank_by"]  # the league is ranked by it (config.yaml)
 # alwagih_M5 has seen the sample it predicts (section 4): not a realisable predictor
 lead = findings.leaders(league, metric, exclude=["alwagih_M5"])
 ext = findings.tradeoff_extremes(R.read("tradeoff"))

@@ -247,5 +247,6 @@ rule benchmark_report:
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
         page=lambda wildcards, input: REPORT_PAGE("benchmark", input),
+        settings={"rank_by": BENCH.get("rank_by")},
     script:
         "../scripts/render_report.py"

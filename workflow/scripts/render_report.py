@@ -31,6 +31,7 @@ def main(input, output, params, config, logger) -> None:
         nav=params.page["nav"],
         made_by=params.page["made_by"],
         provenance=provenance.collect(config, repo=params.repo),
+        settings=getattr(params, "settings", None),
     )
     render_notebook(
         input.notebook,
