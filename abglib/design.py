@@ -33,8 +33,6 @@ from __future__ import annotations
 import numbers
 
 import numpy as np
-from scipy.linalg import solve_discrete_are
-from scipy.optimize import brentq
 
 from ._checks import (
     AbglibValueError,
@@ -743,6 +741,8 @@ def huang_for_enbw(bn_hz, dt, rule="type1", order=2) -> Gains:
         t_lo *= 0.5
     if f(t_lo) == 0.0:
         return design(xi_of(t_lo), order)
+    from scipy.optimize import brentq  # here: importing scipy costs ~0.3 s
+
     t = brentq(f, t_lo, t_hi, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
     return design(xi_of(t), order)
 
@@ -950,6 +950,8 @@ def _kalman_scalar(q: float, r: float, T: float, order: int, model: str) -> tupl
     H[0, 0] = 1.0
     Q = q * _process_noise(order, model, T)
     # filtering DARE (dual of the control one): P is the a-priori (predicted) covariance
+    from scipy.linalg import solve_discrete_are  # here: importing scipy costs ~0.3 s
+
     P = solve_discrete_are(Phi.T, H.T, Q, np.array([[r]]))
     K = (P @ H.T / (H @ P @ H.T + r)).ravel()  # a-posteriori (filter) gain
     scale = np.array([1.0, T, T**2])[:order]  # K = [alpha, beta/T, gamma/T^2]

@@ -316,10 +316,11 @@ def test_report_page_names_neighbours_and_the_rule_behind_each_file():
 
     from abglib.reporting.pipeline import report_page
 
-    def rule(name, out, script):
+    def rule(name, out, script, params=None):
         return SimpleNamespace(
             name=name,
             script=script,
+            params=params,
             snakefile="/repo/workflow/rules/x.smk",
             is_producer=lambda p: p.startswith(out),
         )
@@ -329,16 +330,20 @@ def test_report_page_names_neighbours_and_the_rule_behind_each_file():
         rules=[
             rule("d_report", "results/d", "../scripts/render_report.py"),
             rule("d_figures", "results/d/figures/", "../scripts/d_figures.py"),
+            # a run: rule names its script in params (run_script, workflow/rules/common.smk)
+            rule("d_study", "results/d/s", None, SimpleNamespace(script="workflow/scripts/s.py")),
             rule("d_reproduce", "results/d/", "../scripts/reproduce.py"),
         ],
     )
     files = SimpleNamespace(
-        figures=["results/d/figures/f.png"], tables=["results/d/comparison.csv"]
+        figures=["results/d/figures/f.png"],
+        tables=["results/d/s/study.csv", "results/d/comparison.csv"],
     )
     page = report_page(wf, ["c", "d", "e"], {"c": "C", "e": "E"}, "d", files)
     assert page["nav"] == {"prev": {"doc": "c", "title": "C"}, "next": {"doc": "e", "title": "E"}}
     assert page["made_by"] == {
         "f.png": ("d_figures", "workflow/scripts/d_figures.py"),
         "comparison.csv": ("d_reproduce", "workflow/scripts/reproduce.py"),
+        "study.csv": ("d_study", "workflow/scripts/s.py"),
     }
     assert report_page(wf, ["d"], {}, "d", files)["nav"] == {}

@@ -49,6 +49,7 @@ import pandas as pd
 
 from .._checks import AbglibValueError
 from .compare import within_tolerance
+from .versions import comparison_tables, previous_version
 
 __all__ = [
     "CHANGES_COLUMNS",
@@ -117,21 +118,6 @@ class Changes:
 
 
 # ------------------------------------------------------------------------------ reading
-def comparison_tables(folder) -> dict[str, Path]:
-    """``{doc: path}`` of every ``<doc>/tables/comparison.csv`` (or ``<doc>/comparison.csv``,
-    as under ``results/``) of a version folder."""
-    folder = Path(folder)
-    if not folder.is_dir():
-        raise AbglibValueError(f"a version folder must be a directory, got {str(folder)!r}")
-    out = {}
-    for sub in sorted(p for p in folder.iterdir() if p.is_dir()):
-        for cand in (sub / "tables" / "comparison.csv", sub / "comparison.csv"):
-            if cand.is_file():
-                out[sub.name] = cand
-                break
-    return out
-
-
 def _read(path) -> pd.DataFrame:
     df = pd.read_csv(path, dtype=str, keep_default_na=False)
     missing = [c for c in _REQUIRED if c not in df.columns]
@@ -349,25 +335,6 @@ def write_build_changes(
 def _label(folder: Path) -> str:
     """The folder's name (``v0.3.0``): pages never carry an absolute path."""
     return folder.resolve().name
-
-
-def _version(name: str) -> tuple[int, ...] | None:
-    m = re.fullmatch(r"v(\d+(?:\.\d+)*)", name)
-    return tuple(int(x) for x in m.group(1).split(".")) if m else None
-
-
-def previous_version(releases, version: str) -> Path | None:
-    """The folder ``releases/v<x.y.z>`` with the highest version below ``version``, or None."""
-    current = _version(f"v{version}")
-    if current is None:
-        raise AbglibValueError(f"version must look like 0.3.0, got {version!r}")
-    releases = Path(releases)
-    found = [
-        (v, p)
-        for p in (releases.iterdir() if releases.is_dir() else [])
-        if p.is_dir() and (v := _version(p.name)) is not None and v < current
-    ]
-    return max(found)[1] if found else None
 
 
 # ------------------------------------------------------------------------------ writing

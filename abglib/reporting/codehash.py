@@ -11,6 +11,7 @@ import it. No job imports this module, so changing it reruns nothing either.
 from __future__ import annotations
 
 import functools
+import os
 from pathlib import Path
 
 from .._checks import AbglibValueError
@@ -40,10 +41,13 @@ def _parsed(path: Path) -> tuple[str, list]:
         st = path.stat()
     except OSError as exc:
         raise AbglibValueError(f"cannot read Python source {path}: {exc}") from None
-    key = f"{path.resolve()}|{st.st_mtime_ns}|{st.st_size}"
+    # an absolute path is key enough (the cache maps a path, size and mtime to what the
+    # file holds; two names of one file only cost a second parse)
+    name = os.path.abspath(path)
+    key = f"{name}|{st.st_mtime_ns}|{st.st_size}"
     hit = _DISK["entries"].get(key)
     if hit is None:
-        hit = _parse_cached(str(path.resolve()), st.st_mtime_ns, st.st_size)
+        hit = _parse_cached(name, st.st_mtime_ns, st.st_size)
         if _DISK["path"] is not None:
             _DISK["entries"][key] = hit
             _DISK["dirty"] = True
@@ -109,16 +113,35 @@ def _save_disk_cache() -> None:
         pass  # a cache: never worth failing a build for
 
 
-def _module_file(package_dir: Path, name: str) -> Path | None:
-    """The file of module ``name`` (dotted, starting with the package's name), or None."""
+def _module_file(package_dir: Path, name: str, files=None) -> Path | None:
+    """The file of module ``name`` (dotted, starting with the package's name), or None.
+
+    ``files``: the package's Python files by their path relative to ``package_dir``
+    (:func:`_package_files`), to look them up instead of asking the file system."""
     parts = name.split(".")
     if parts[0] != package_dir.name:
         return None
-    base = package_dir.joinpath(*parts[1:])
-    for f in (base / "__init__.py", base.with_suffix(".py")):
-        if f.is_file():
-            return f
+    rels = [(*parts[1:], "__init__.py")]
+    if len(parts) > 1:
+        rels.append((*parts[1:-1], parts[-1] + ".py"))
+    for rel in rels:
+        if files is not None:
+            if rel in files:
+                return package_dir.joinpath(*rel)
+        elif package_dir.joinpath(*rel).is_file():
+            return package_dir.joinpath(*rel)
     return None
+
+
+def _package_files(package_dir: Path) -> set[tuple[str, ...]]:
+    """Every ``*.py`` file under ``package_dir``, as path parts relative to it (one walk
+    of the tree, instead of two ``stat`` calls per import looked up)."""
+    out = set()
+    for dirpath, dirnames, filenames in os.walk(package_dir):
+        dirnames[:] = [d for d in dirnames if d != "__pycache__"]
+        rel = Path(dirpath).relative_to(package_dir).parts
+        out.update((*rel, f) for f in filenames if f.endswith(".py"))
+    return out
 
 
 def _imports(path: Path, module: str | None, package: str) -> set[str]:
@@ -160,10 +183,11 @@ def module_closure(sources, package_dir) -> list[Path]:
     """
     root = Path(package_dir).resolve()
     package = root.name
+    files = _package_files(root)
     seen: dict[str, Path] = {}
     todo: list[tuple[str | None, Path]] = []
     for src in sources:
-        f = _module_file(root, str(src)) if isinstance(src, str) and "/" not in src else None
+        f = _module_file(root, str(src), files) if isinstance(src, str) and "/" not in src else None
         if f is not None:
             todo.append((str(src), f))
         elif Path(src).is_file():
@@ -183,7 +207,7 @@ def module_closure(sources, package_dir) -> list[Path]:
             parts = name.split(".")
             deps |= {".".join(parts[:i]) for i in range(1, len(parts))}
         for dep in deps:
-            f = _module_file(root, dep)
+            f = _module_file(root, dep, files)
             if f is not None and dep not in seen:
                 todo.append((dep, f))
     return sorted(set(seen.values()))

@@ -148,7 +148,8 @@ def log_to(path) -> logging.Logger:
 
 
 class JobFailed(RuntimeError):
-    """A job run inside Snakemake's own process failed; the message names its log."""
+    """A job run inside Snakemake's own process, or in its worker, failed; the message
+    names its log."""
 
 
 @contextlib.contextmanager
@@ -235,6 +236,8 @@ def made_by(workflow, paths) -> dict[str, tuple[str, str]]:
             if r.script:
                 full = Path(r.snakefile).parent / r.script
                 script = Path(os.path.relpath(os.path.normpath(full), workflow.basedir)).as_posix()
+            elif isinstance(getattr(getattr(r, "params", None), "script", None), str):
+                script = r.params.script  # a run: rule's script (run_script, common.smk)
             out[Path(path).name] = (r.name, script)
             break
     return out

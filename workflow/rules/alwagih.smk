@@ -41,13 +41,13 @@ rule alwagih_study:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("reproduce.py", "abglib.replications.alwagih.study"),
+        **script_params("reproduce.py", "abglib.replications.alwagih.study"),
         doc="alwagih",
         part="study",
         cfg=doc_config("alwagih", "datasets"),
         digits=config["significant_digits"],
-    script:
-        "../scripts/reproduce.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 # every published claim judged, and its robustness over the plausible ranges
@@ -63,14 +63,14 @@ rule alwagih_claims:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("reproduce.py", "abglib.replications.alwagih.claims"),
+        **script_params("reproduce.py", "abglib.replications.alwagih.claims"),
         doc="alwagih",
         part="claims",
         cfg=doc_config("alwagih", "datasets"),
         overrides=config["tolerance_overrides"].get("alwagih", {}),
         digits=config["significant_digits"],
-    script:
-        "../scripts/reproduce.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule alwagih_figures:
@@ -118,10 +118,10 @@ rule alwagih_figures:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("alwagih_figures.py"),
+        **script_params("alwagih_figures.py"),
         dpi=config["figure_dpi"],
-    script:
-        "../scripts/alwagih_figures.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule alwagih_report:
@@ -147,11 +147,11 @@ rule alwagih_report:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("render_report.py", NOTEBOOKS / "alwagih.py"),
+        **script_params("render_report.py", NOTEBOOKS / "alwagih.py"),
         doc="alwagih",
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
         page=lambda wildcards, input: REPORT_PAGE("alwagih", input),
-    script:
-        "../scripts/render_report.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)

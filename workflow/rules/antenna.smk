@@ -37,13 +37,13 @@ rule antenna_study:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("reproduce.py", "abglib.replications.antenna.study"),
+        **script_params("reproduce.py", "abglib.replications.antenna.study"),
         doc="antenna",
         part="study",
         cfg=doc_config("antenna"),
         digits=config["significant_digits"],
-    script:
-        "../scripts/reproduce.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 # every published claim judged, and its robustness over the plausible ranges
@@ -59,14 +59,14 @@ rule antenna_claims:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("reproduce.py", "abglib.replications.antenna.claims"),
+        **script_params("reproduce.py", "abglib.replications.antenna.claims"),
         doc="antenna",
         part="claims",
         cfg=doc_config("antenna"),
         overrides=config["tolerance_overrides"].get("antenna", {}),
         digits=config["significant_digits"],
-    script:
-        "../scripts/reproduce.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule antenna_figures:
@@ -89,10 +89,10 @@ rule antenna_figures:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("antenna_figures.py"),
+        **script_params("antenna_figures.py"),
         dpi=config["figure_dpi"],
-    script:
-        "../scripts/antenna_figures.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule antenna_report:
@@ -118,11 +118,11 @@ rule antenna_report:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("render_report.py", NOTEBOOKS / "antenna.py"),
+        **script_params("render_report.py", NOTEBOOKS / "antenna.py"),
         doc="antenna",
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
         page=lambda wildcards, input: REPORT_PAGE("antenna", input),
-    script:
-        "../scripts/render_report.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)

@@ -85,14 +85,14 @@ rule benchmark_league:
         mem_mb=1000,
         runtime=10,
     params:
-        code=code_of("benchmark_league.py"),
+        **script_params("benchmark_league.py"),
         variants=BENCH_VARIANTS,
         family_alpha=BENCH.get("family_alpha"),
         family_size=BENCH.get("family_size"),
         rank_by=BENCH.get("rank_by"),
         digits=config["significant_digits"],
-    script:
-        "../scripts/benchmark_league.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule benchmark_tradeoff:
@@ -111,13 +111,13 @@ rule benchmark_tradeoff:
         mem_mb=2000,
         runtime=20,
     params:
-        code=code_of("benchmark_tradeoff.py"),
+        **script_params("benchmark_tradeoff.py"),
         families=BENCH.get("tradeoff_families"),
         burn_in=BENCH.get("burn_in"),
         init=BENCH.get("init"),
         digits=config["significant_digits"],
-    script:
-        "../scripts/benchmark_tradeoff.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule benchmark_figures:
@@ -145,12 +145,12 @@ rule benchmark_figures:
         mem_mb=1000,
         runtime=10,
     params:
-        code=code_of("benchmark_figures.py"),
+        **script_params("benchmark_figures.py"),
         dpi=config["figure_dpi"],
         rank_by=BENCH.get("rank_by"),
         tradeoff_scenarios=BENCH.get("tradeoff_scenarios"),
-    script:
-        "../scripts/benchmark_figures.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule benchmark_peers:
@@ -169,12 +169,12 @@ rule benchmark_peers:
         mem_mb=1000,
         runtime=10,
     params:
-        code=code_of("benchmark_peers.py"),
+        **script_params("benchmark_peers.py"),
         rtol=BENCH.get("peers", {}).get("rtol"),
         seed=BENCH.get("peers", {}).get("seed"),
         digits=config["significant_digits"],
-    script:
-        "../scripts/benchmark_peers.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 # wall-clock timings: not byte-reproducible, kept out of the deterministic tables
@@ -192,11 +192,11 @@ rule benchmark_speed:
         mem_mb=2000,
         runtime=10,
     params:
-        code=code_of("benchmark_speed.py"),
+        **script_params("benchmark_speed.py"),
         repeats=BENCH.get("speed", {}).get("repeats", 1),
         run=BENCH.get("speed", {}).get("run", False),
-    script:
-        "../scripts/benchmark_speed.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule benchmark_report:
@@ -241,12 +241,12 @@ rule benchmark_report:
         mem_mb=2000,
         runtime=20,
     params:
-        code=code_of("render_report.py", NOTEBOOKS / "benchmark.py"),
+        **script_params("render_report.py", NOTEBOOKS / "benchmark.py"),
         doc="benchmark",
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
         page=lambda wildcards, input: REPORT_PAGE("benchmark", input),
         settings={"rank_by": BENCH.get("rank_by")},
-    script:
-        "../scripts/render_report.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)

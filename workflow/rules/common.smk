@@ -7,6 +7,7 @@ from pathlib import Path
 import abglib
 from abglib.reporting.codehash import code_hash
 from abglib.reporting.pipeline import config_errors, prepend_pythonpath
+from abglib.reporting.workers import run_script as run_in_worker, script_object
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
@@ -76,6 +77,43 @@ def code_of(*sources, extra=()):
             *paths, package_dir=ABGLIB_DIR, extra=extra, cache=CODE_CACHE
         )
     return _CODE_HASHES[key]
+
+
+def script_params(script, *sources, extra=()):
+    """The params ``script`` and ``code`` of a job that runs ``workflow/scripts/<script>``.
+
+    ``script`` is the script's path in the repository (what run_script runs and what the
+    reports' captions name); ``code`` is the code hash of the script and ``sources``
+    (code_of).
+    """
+    return {
+        "script": f"workflow/scripts/{script}",
+        "code": code_of(script, *sources, extra=extra),
+    }
+
+
+def run_script(input, output, params, wildcards, threads, resources, log, rulename):
+    """The body of a rule's ``run:`` block: its script (``params.script``) with the same
+    ``snakemake`` object as under ``script:``. In Snakemake's own process (a local build)
+    it runs in a fork of a warm worker; in a job's own process (a cluster) it runs in place
+    (abglib.reporting.workers)."""
+    smk = script_object(
+        input,
+        output,
+        params,
+        wildcards,
+        threads,
+        resources,
+        log,
+        config,
+        rulename,
+        str(SCRIPTS_DIR),
+    )
+    run_in_worker(
+        Path(workflow.basedir) / params.script,
+        smk,
+        in_worker=not (workflow.remote_exec or workflow.subprocess_exec),
+    )
 
 
 # per document: figure stems and table stems a report shows and copies beside itself
@@ -229,7 +267,6 @@ def claims_outputs(doc):
 # ---------------------------------------------------------------- benchmark matrix
 # (benchmark.smk): the variants and scenarios of config['benchmark'], checked at parse
 # time, and the input functions of its rules.
-from abglib.bench.benchmark import n_vrf_checks
 from abglib.bench.variants import callable_file, check_variant, resolve_callable
 
 BENCH = config.get("benchmark", {})
@@ -269,10 +306,6 @@ def bench_cell_code(wildcards):
     return code_of("abglib.bench.cell", extra=[f] if f else [])
 
 
-if BENCH:
-    _check_benchmark()
-
-
 def bench_runs(scenario):
     """Monte Carlo runs of a cell: the config override, else the dataset's own runs."""
     runs = BENCH.get("runs")
@@ -289,6 +322,8 @@ def bench_mem_mb(wildcards):
 
 def _check_family_size():
     """The Bonferroni bound assumes at most family_size VRF checks in the matrix."""
+    from abglib.bench.benchmark import n_vrf_checks
+
     n = n_vrf_checks(len(BENCH_VARIANTS), len(BENCH_SCENARIOS))
     if n > int(BENCH["family_size"]):
         raise WorkflowError(
@@ -297,8 +332,43 @@ def _check_family_size():
         )
 
 
-if BENCH:
+# the checks compute every variant's gains on every scenario and import the design rules'
+# numerics (scipy): about a second. A build skips them when this very matrix passed them
+# before with the same code: the key holds the variants, the scenarios, the family size
+# and the code hash of the checks and of the users' own variant files.
+MATRIX_CHECKED = Path(".snakemake") / "abglib-matrix-checked"
+
+
+def _matrix_key():
+    import hashlib
+    import json
+
+    files = [f for f in map(callable_file, BENCH_SPECS.values()) if f]
+    code = code_of("abglib.bench.variants", "abglib.bench.benchmark", extra=files)
+    scenarios = {s: DATASET_SCENARIOS.get(s) for s in BENCH_SCENARIOS}
+    payload = [BENCH_SPECS, scenarios, BENCH.get("family_size"), code]
+    text = json.dumps(payload, sort_keys=True, default=str)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def _check_matrix():
+    key = _matrix_key()
+    try:
+        if MATRIX_CHECKED.read_text(encoding="utf-8") == key:
+            return
+    except OSError:
+        pass
+    _check_benchmark()
     _check_family_size()
+    try:
+        MATRIX_CHECKED.parent.mkdir(parents=True, exist_ok=True)
+        MATRIX_CHECKED.write_text(key, encoding="utf-8")
+    except OSError:
+        pass  # a record only: the next build checks again
+
+
+if BENCH:
+    _check_matrix()
 
 
 def bench_cells():

@@ -14,7 +14,7 @@ rule scorecard:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("scorecard.py"),
+        **script_params("scorecard.py"),
         digits=config["significant_digits"],
-    script:
-        "../scripts/scorecard.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)

@@ -30,13 +30,13 @@ rule huang_study:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("reproduce.py", "abglib.replications.huang.study"),
+        **script_params("reproduce.py", "abglib.replications.huang.study"),
         doc="huang",
         part="study",
         cfg=doc_config("huang"),
         digits=config["significant_digits"],
-    script:
-        "../scripts/reproduce.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 # every published claim judged, and its robustness over the plausible ranges
@@ -52,14 +52,14 @@ rule huang_claims:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("reproduce.py", "abglib.replications.huang.claims"),
+        **script_params("reproduce.py", "abglib.replications.huang.claims"),
         doc="huang",
         part="claims",
         cfg=doc_config("huang"),
         overrides=config["tolerance_overrides"].get("huang", {}),
         digits=config["significant_digits"],
-    script:
-        "../scripts/reproduce.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule huang_figures:
@@ -87,11 +87,11 @@ rule huang_figures:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("huang_figures.py"),
+        **script_params("huang_figures.py"),
         cfg=HG,
         dpi=config["figure_dpi"],
-    script:
-        "../scripts/huang_figures.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule huang_report:
@@ -117,11 +117,11 @@ rule huang_report:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("render_report.py", NOTEBOOKS / "huang.py"),
+        **script_params("render_report.py", NOTEBOOKS / "huang.py"),
         doc="huang",
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
         page=lambda wildcards, input: REPORT_PAGE("huang", input),
-    script:
-        "../scripts/render_report.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)

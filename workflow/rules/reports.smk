@@ -30,7 +30,7 @@ rule report_assets:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("render_assets.py"),
+        **script_params("render_assets.py"),
         # the stylesheet and script themselves (not Python: hashed by content)
         assets=sha256(
             b"".join(
@@ -38,8 +38,8 @@ rule report_assets:
                 for f in sorted((ABGLIB_DIR / "reporting/assets").glob("*"))
             )
         ).hexdigest(),
-    script:
-        "../scripts/render_assets.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule report_index:
@@ -56,21 +56,21 @@ rule report_index:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("render_index.py"),
+        **script_params("render_index.py"),
         docs=DOCS,
         titles=DOC_TITLES,
         extras=EXTRA_REPORTS,
         order=REPORT_ORDER,
         version=VERSION,
         repo=lambda wildcards, input: REPO,
-    script:
-        "../scripts/render_index.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 # ---------------------------------------------------------------- what changed (issue 13)
 # the build's comparison tables against the highest version folder below this version
 # under the repository's reports/ (the committed releases); none: a page saying so
-from abglib.reporting.changes import comparison_tables, previous_version
+from abglib.reporting.versions import comparison_tables, previous_version
 
 CHANGES_PREVIOUS = previous_version(Path(workflow.basedir) / "reports", VERSION)
 
@@ -92,11 +92,11 @@ rule changes:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("changes.py"),
+        **script_params("changes.py"),
         docs=DOCS,
         version=VERSION,
         previous=lambda wildcards, input: (
             str(CHANGES_PREVIOUS) if CHANGES_PREVIOUS else None
         ),
-    script:
-        "../scripts/changes.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)

@@ -19,12 +19,12 @@ rule steelman_frequency_response:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("frequency_response.py"),
+        **script_params("frequency_response.py"),
         figure=lambda wildcards: S78["figures"][wildcards.fig],
         grids=S78["grids"],
         digits=config["significant_digits"],
-    script:
-        "../scripts/frequency_response.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule steelman_figure:
@@ -44,12 +44,12 @@ rule steelman_figure:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("plot_frequency_response.py"),
+        **script_params("plot_frequency_response.py"),
         axes=lambda wildcards: S78["figures"][wildcards.fig]["axes"],
         caption=lambda wildcards: S78["figures"][wildcards.fig]["caption"],
         dpi=config["figure_dpi"],
-    script:
-        "../scripts/plot_frequency_response.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 # every table of the study (abglib.replications.steelman1978) and the judged claims
@@ -77,13 +77,13 @@ rule steelman1978_study:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("reproduce.py", "abglib.replications.steelman1978.study"),
+        **script_params("reproduce.py", "abglib.replications.steelman1978.study"),
         doc="steelman1978",
         part="study",
         cfg=doc_config("steelman1978"),
         digits=config["significant_digits"],
-    script:
-        "../scripts/reproduce.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 # every published claim judged, and its robustness over the plausible ranges
@@ -99,14 +99,14 @@ rule steelman1978_claims:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("reproduce.py", "abglib.replications.steelman1978.claims"),
+        **script_params("reproduce.py", "abglib.replications.steelman1978.claims"),
         doc="steelman1978",
         part="claims",
         cfg=doc_config("steelman1978"),
         overrides=config["tolerance_overrides"].get("steelman1978", {}),
         digits=config["significant_digits"],
-    script:
-        "../scripts/reproduce.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)
 
 
 rule steelman_report:
@@ -132,11 +132,11 @@ rule steelman_report:
     conda:
         "../envs/abglib.yaml"
     params:
-        code=code_of("render_report.py", NOTEBOOKS / "steelman1978.py"),
+        **script_params("render_report.py", NOTEBOOKS / "steelman1978.py"),
         doc="steelman1978",
         version=VERSION,
         repo=lambda wildcards, input: REPO,
         timeout=config["notebook_timeout"],
         page=lambda wildcards, input: REPORT_PAGE("steelman1978", input),
-    script:
-        "../scripts/render_report.py"
+    run:
+        run_script(input, output, params, wildcards, threads, resources, log, rule)

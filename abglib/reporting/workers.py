@@ -1,0 +1,151 @@
+"""Workflow scripts run in warm worker processes instead of a new Python each.
+
+A Snakemake ``script:`` job starts a new Python, which imports numpy, pandas, scipy,
+matplotlib, numba and abglib again: about 2 s, more than most of this workflow's jobs
+spend on their own work, paid some 40 times per clean build. Here a rule is a ``run:``
+block that hands its script to :func:`run_script`:
+
+- inside Snakemake's own process (a local build, whose ``run:`` jobs are threads: the
+  default profile's ``force-use-threads``), the script runs in a fork of one *fork
+  server*, a process that imported those modules once per build
+  (:mod:`multiprocessing`'s ``forkserver``). A job starts in milliseconds, yet it still
+  runs in a process of its own: its own GIL (two jobs really use two cores), its own
+  matplotlib state and ``sys.stderr``, nothing left behind for the next job, and a crash
+  fails only that job;
+- anywhere else (a cluster job or any job that already has a process of its own), the
+  script runs in the calling process, as Snakemake's ``script:`` would.
+
+Either way the script sees the same ``snakemake`` object as under ``script:``
+(``snakemake.input``, ``.output``, ``.params``, ``.log``...), so the scripts themselves
+are unchanged and still run under plain ``script:`` too.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import runpy
+import sys
+import threading
+import traceback
+from pathlib import Path
+
+from .pipeline import JobFailed
+
+__all__ = ["PRELOAD", "JobFailed", "run_script", "script_object"]
+
+#: Modules the fork server imports once, so that no job pays for them (a module that
+#: fails to import is skipped: the job that needs it will say why).
+PRELOAD = [
+    "numpy",
+    "scipy.linalg",
+    "scipy.signal",
+    "scipy.optimize",
+    "scipy.stats",
+    "pandas",
+    "matplotlib",
+    "matplotlib.pyplot",
+    "numba",
+    "snakemake.io",
+    "abglib",
+    "abglib.analysis",
+    "abglib.bench",
+    "abglib.replications",
+    "abglib.reporting.compare",
+    "abglib.reporting.pipeline",
+    "abglib.reporting.plotting",
+    "abglib.reporting.render",
+]
+
+_CONTEXT = None
+_CONTEXT_LOCK = threading.Lock()
+
+
+def script_object(
+    input, output, params, wildcards, threads, resources, log, config, rule, scriptdir
+):
+    """The ``snakemake`` object a script sees, as Snakemake's ``script:`` builds it."""
+    from snakemake.iocontainers import Snakemake
+
+    return Snakemake(
+        input, output, params, wildcards, threads, resources, log, config, rule, 0, scriptdir
+    )
+
+
+def _context():
+    """The fork-server context, started on first use (a build with nothing to do never
+    starts it)."""
+    global _CONTEXT
+    with _CONTEXT_LOCK:
+        if _CONTEXT is None:
+            os.environ.setdefault("MPLBACKEND", "Agg")
+            ctx = multiprocessing.get_context("forkserver")
+            # "__main__" first: the server loads the main script (Snakemake's entry point)
+            # once, so a worker does not run it again, as multiprocessing otherwise does
+            ctx.set_forkserver_preload(["__main__", *PRELOAD])
+            _CONTEXT = ctx
+    return _CONTEXT
+
+
+def _execute(script, smk) -> None:
+    """Run ``script`` with ``snakemake`` bound to ``smk``, as Snakemake's preamble does."""
+    runpy.run_path(str(script), init_globals={"snakemake": smk}, run_name="__main__")
+
+
+def _worker(script, smk, cwd, conn) -> None:
+    """Body of the worker process: the script, then its outcome over ``conn``."""
+    try:
+        os.chdir(cwd)
+        _execute(script, smk)
+    except BaseException as err:  # noqa: BLE001 - every failure must reach the parent
+        # the traceback goes where the script sends its stderr (its log, see log_to)
+        traceback.print_exc()
+        sys.stderr.flush()
+        conn.send(f"{type(err).__name__}: {err}")
+        conn.close()
+        os._exit(1)
+    conn.send(None)
+    conn.close()
+
+
+def run_script(script, smk, *, in_worker: bool = True) -> None:
+    """Run the workflow script ``script`` (a path) for one job.
+
+    ``smk`` is the job's ``snakemake`` object (:func:`script_object`). ``in_worker``:
+    run it in a fork of the warm fork server (the caller is Snakemake's own process,
+    whose jobs are threads); else run it here, in the job's own process, with
+    ``sys.stderr`` and the excepthook given back afterwards. Raises :class:`JobFailed`
+    naming the script, the error and the job's log when the script fails.
+    """
+    script = Path(script)
+    if not script.is_file():
+        raise JobFailed(f"no workflow script {script}")
+    log = f" (full traceback in {smk.log[0]})" if len(smk.log) else ""
+    if not in_worker:
+        saved = sys.stderr, sys.excepthook
+        try:
+            _execute(script, smk)
+        except Exception as err:
+            traceback.print_exc()
+            raise JobFailed(f"{script.name} failed: {type(err).__name__}: {err}{log}") from err
+        finally:
+            sys.stderr, sys.excepthook = saved
+        return
+    ctx = _context()
+    receive, send = ctx.Pipe(duplex=False)
+    proc = ctx.Process(
+        target=_worker, args=(str(script), smk, os.getcwd(), send), name=f"abglib-{script.stem}"
+    )
+    proc.start()
+    send.close()
+    try:
+        outcome = receive.recv()
+    except EOFError:  # the worker died without a word (killed, or a crash in C)
+        outcome = "the worker process ended without reporting"
+    proc.join()
+    receive.close()
+    if outcome is not None or proc.exitcode != 0:
+        raise JobFailed(
+            f"{script.name} failed: {outcome or 'no error reported'} "
+            f"(worker exit code {proc.exitcode}){log}"
+        )

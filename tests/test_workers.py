@@ -1,0 +1,103 @@
+"""Workflow scripts in warm worker processes (abglib.reporting.workers): the script sees
+Snakemake's ``snakemake`` object, runs in a process of its own, and its failure names the
+script, the error and the log."""
+
+import os
+import sys
+
+import pytest
+
+from abglib.reporting.pipeline import JobFailed
+from abglib.reporting.workers import run_script, script_object
+
+SCRIPT = """
+import json, os, sys
+from abglib.reporting.pipeline import log_to
+
+log_to(snakemake.log[0])
+print("to the log", file=sys.stderr)
+if snakemake.params.fail:
+    raise ValueError(f"bad value {snakemake.params.value}")
+leaked = hasattr(json, "_abglib_marker")
+json._abglib_marker = True  # a module-level change a later job must not see
+with open(snakemake.output.out, "w") as fh:
+    json.dump({"pid": os.getpid(), "value": snakemake.params.value,
+               "wildcard": snakemake.wildcards.w, "leaked": leaked, "cwd": os.getcwd()}, fh)
+"""
+
+
+def _job(tmp_path, name, **params):
+    from snakemake.iocontainers import Log, Namedlist, OutputFiles, Params, Wildcards
+
+    def named(cls, **items):
+        nl = cls(list(items.values()))
+        for i, k in enumerate(items):
+            nl._set_name(k, i)
+        return nl
+
+    return script_object(
+        Namedlist([]),
+        named(OutputFiles, out=str(tmp_path / f"{name}.json")),
+        named(Params, **{"fail": False, "value": 1, **params}),
+        named(Wildcards, w=name),
+        1,
+        Namedlist([]),
+        Log([str(tmp_path / f"{name}.log")]),
+        {},
+        "rule_x",
+        str(tmp_path),
+    )
+
+
+@pytest.fixture
+def script(tmp_path):
+    path = tmp_path / "job.py"
+    path.write_text(SCRIPT, encoding="utf-8")
+    return path
+
+
+def _read(tmp_path, name):
+    import json
+
+    return json.loads((tmp_path / f"{name}.json").read_text(encoding="utf-8"))
+
+
+def test_a_script_runs_in_a_fresh_process_of_its_own(script, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    run_script(script, _job(tmp_path, "a", value=2.5))
+    run_script(script, _job(tmp_path, "b", value=3))
+    a, b = _read(tmp_path, "a"), _read(tmp_path, "b")
+    assert (a["value"], a["wildcard"], b["value"]) == (2.5, "a", 3)
+    assert os.getpid() not in {a["pid"], b["pid"]} and a["pid"] != b["pid"]
+    # what one job changed in a module is not seen by the next (each is a new fork)
+    assert not a["leaked"] and not b["leaked"]
+    assert a["cwd"] == str(tmp_path)
+    assert "to the log" in (tmp_path / "a.log").read_text(encoding="utf-8")
+
+
+def test_a_failing_script_names_the_error_and_its_log(script, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(JobFailed, match=r"job\.py failed: ValueError: bad value 7 .*a\.log"):
+        run_script(script, _job(tmp_path, "a", fail=True, value=7))
+    log = (tmp_path / "a.log").read_text(encoding="utf-8")
+    assert "Traceback" in log and "ValueError: bad value 7" in log
+    assert not (tmp_path / "a.json").exists()
+
+
+def test_in_place_runs_here_and_gives_stderr_back(script, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    stderr, hook = sys.stderr, sys.excepthook
+    run_script(script, _job(tmp_path, "a"), in_worker=False)
+    assert _read(tmp_path, "a")["pid"] == os.getpid()
+    assert (sys.stderr, sys.excepthook) == (stderr, hook)
+    with pytest.raises(JobFailed, match="ValueError: bad value 1"):
+        run_script(script, _job(tmp_path, "b", fail=True), in_worker=False)
+    assert (sys.stderr, sys.excepthook) == (stderr, hook)
+    import json
+
+    del json._abglib_marker  # the in-place run changed this process, as intended
+
+
+def test_a_missing_script_is_named(tmp_path):
+    with pytest.raises(JobFailed, match="no workflow script .*nope.py"):
+        run_script(tmp_path / "nope.py", _job(tmp_path, "a"))
