@@ -20,6 +20,11 @@ builtins, standard streams, hooks, environment, warning filters, pandas, numpy a
 matplotlib options, and the pyplot figures the notebook left open are closed. Modules a
 notebook imports stay imported (as a cache; module-level state they keep is not undone).
 
+What is put back is process-wide (working directory, ``sys.stdout``, the IPython
+instance, pandas' options): notebooks executed from several threads of one process run
+one at a time (a lock), and other threads see the notebook's state while it runs. Run
+concurrent reports in separate processes (forked jobs are fine).
+
 Differences from a kernel, none of which the report notebooks meet: output that C code
 or subprocesses write to file descriptors 1 and 2 goes to the process's own stdout and
 stderr, not to the notebook; ``input()`` raises (as with nbclient); a pyplot figure a
@@ -74,7 +79,7 @@ _LANGUAGE_INFO = {
     "nbconvert_exporter": "python",
     "pygments_lexer": "ipython3",
 }
-_BINARY_MIME = ("image/png", "image/jpeg", "application/pdf")
+_ONE_AT_A_TIME = threading.Lock()
 
 
 class CellExecutionError(RuntimeError):
@@ -459,7 +464,7 @@ def _alarm(timeout):
         yield
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+        signal.signal(signal.SIGALRM, signal.SIG_DFL if previous is None else previous)
         if old_delay:  # the caller's own timer keeps running
             left = max(old_delay - (time.monotonic() - start), 1e-3)
             signal.setitimer(signal.ITIMER_REAL, left, old_interval)
@@ -514,7 +519,7 @@ def execute_notebook(nb, *, cwd=".", timeout: float | None = 600):
 
     if timeout is not None and not timeout >= 0:
         raise ValueError(f"timeout must satisfy timeout >= 0 (or be None), got {timeout!r}")
-    with _isolated(cwd):
+    with _ONE_AT_A_TIME, _isolated(cwd):
         shell = _new_shell()
         open_before = set(_figure_numbers())
         try:
