@@ -265,3 +265,15 @@ def test_in_process_and_kernel_give_the_same_notebook(tmp_path):
     _execute_in_kernel(b, tmp_path, 120)
     assert strip_volatile(a) == strip_volatile(b) == ["err\n"]
     assert nbformat.writes(a) == nbformat.writes(b)
+
+
+def test_another_threads_prints_stay_out_of_the_notebook(tmp_path, capsys):
+    nb = notebook(
+        "import threading\n"
+        "t = threading.Thread(target=print, args=('from another thread',))\n"
+        "t.start(); t.join()\n"
+        "print('from the cell')"
+    )
+    execute_notebook(nb, cwd=tmp_path)
+    assert outputs(nb) == [("stream", "stdout", "from the cell\n")]
+    assert "from another thread" in capsys.readouterr().out

@@ -20,10 +20,11 @@ builtins, standard streams, hooks, environment, warning filters, pandas, numpy a
 matplotlib options, and the pyplot figures the notebook left open are closed. Modules a
 notebook imports stay imported (as a cache; module-level state they keep is not undone).
 
-What is put back is process-wide (working directory, ``sys.stdout``, the IPython
-instance, pandas' options): notebooks executed from several threads of one process run
-one at a time (a lock), and other threads see the notebook's state while it runs. Run
-concurrent reports in separate processes (forked jobs are fine).
+What is put back is process-wide (working directory, the IPython instance, pandas'
+options): notebooks executed from several threads of one process run one at a time (a
+lock), and other threads see the notebook's state while it runs (except its output
+streams: what they print goes where it went before). Run concurrent reports in separate
+processes (forked jobs are fine).
 
 Differences from a kernel, none of which the report notebooks meet: output that C code
 or subprocesses write to file descriptors 1 and 2 goes to the process's own stdout and
@@ -159,16 +160,21 @@ class _Recorder:
 
 
 class _Stream:
-    """``sys.stdout`` / ``sys.stderr`` of a running cell: writes become stream outputs."""
+    """``sys.stdout`` / ``sys.stderr`` of a running cell: the cell's writes become stream
+    outputs; other threads' writes go where they went before."""
 
     encoding = "utf-8"
     errors = "strict"
 
-    def __init__(self, name: str, recorder: _Recorder):
+    def __init__(self, name: str, recorder: _Recorder, elsewhere):
         self.name = name
         self._recorder = recorder
+        self._elsewhere = elsewhere
+        self._thread = threading.get_ident()
 
     def write(self, text: str) -> int:
+        if threading.get_ident() != self._thread and self._elsewhere is not None:
+            return self._elsewhere.write(text)
         if not isinstance(text, str):
             raise TypeError(f"write() argument must be str, not {type(text).__name__}")
         self._recorder.stream(self.name, text)
@@ -546,7 +552,8 @@ def _run_cells(shell, nb, timeout, open_before) -> None:
         rec.outputs, rec.clear_pending = [], False
         result, timed_out = None, False
         streams = sys.stdout, sys.stderr
-        sys.stdout, sys.stderr = _Stream("stdout", rec), _Stream("stderr", rec)
+        sys.stdout = _Stream("stdout", rec, streams[0])
+        sys.stderr = _Stream("stderr", rec, streams[1])
         try:
             with _alarm(timeout):
                 result = shell.run_cell(cell.source, store_history=True)
