@@ -3,8 +3,10 @@
 A report is a jupytext percent-format notebook (``workflow/notebooks/<doc>.py``) that
 *reads* what upstream rules computed. :func:`render_notebook` injects the pipeline's
 parameters after the cell tagged ``parameters`` (papermill's convention), executes the
-notebook headless with nbclient, strips everything that varies between runs (execution
-timestamps, kernel versions, stderr streams) and writes the page with
+notebook in the calling process (:mod:`abglib.reporting.execute`: a fresh IPython shell,
+no kernel; a Jupyter kernel through nbclient with ``engine="kernel"``), strips
+everything that varies between runs (execution timestamps, kernel versions, stderr
+streams) and writes the page with
 :func:`abglib.reporting.page.build_page` (code hidden, equations as MathML, figures
 linked from ``figures/``, shared assets in ``../assets/``). :func:`write_index` writes
 the per-version index page; :func:`write_assets` the shared stylesheet and script.
@@ -18,6 +20,7 @@ from pathlib import Path
 import pandas as pd
 
 __all__ = [
+    "ENGINES",
     "inject_parameters",
     "render_notebook",
     "report_context",
@@ -82,6 +85,9 @@ def strip_volatile(nb) -> list[str]:
     return stderr
 
 
+ENGINES = ("inprocess", "kernel")
+
+
 def render_notebook(
     source,
     html_path,
@@ -92,6 +98,7 @@ def render_notebook(
     timeout: int = 600,
     log=None,
     page: Mapping | None = None,
+    engine: str = "inprocess",
 ) -> None:
     """Execute a jupytext percent notebook headless and write it as a report page.
 
@@ -104,7 +111,7 @@ def render_notebook(
     parameters : mapping
         Injected after the cell tagged ``parameters`` (relative paths, numbers, provenance).
     cwd : path
-        Working directory of the kernel (the pipeline's working directory), so the
+        Working directory of the notebook (the pipeline's working directory), so the
         notebook's relative paths resolve.
     name : str
         Title of the HTML page.
@@ -115,19 +122,25 @@ def render_notebook(
     page : mapping, optional
         Keyword arguments of :func:`abglib.reporting.page.build_page` (version, verdict
         counts, neighbours, files beside the page, notebook path).
+    engine : {"inprocess", "kernel"}
+        ``"inprocess"``: in this process, in a fresh IPython shell
+        (:func:`abglib.reporting.execute.execute_notebook`: no kernel start-up);
+        ``"kernel"``: in a Jupyter kernel through nbclient (needs the ``kernel`` extra:
+        nbclient, ipykernel). Both give the same page.
 
     Raises
     ------
+    abglib.reporting.execute.CellExecutionError
+        A cell failed (the message gives the cell and the traceback); with
+        ``engine="kernel"``, nbclient's ``CellExecutionError``.
     RuntimeError
         If the HTML would contain the absolute working directory (outputs must be
         relocatable and identical wherever they are built).
     """
-    import tempfile
-
     import jupytext
-    import nbclient
-    from jupyter_client import KernelManager
 
+    if engine not in ENGINES:
+        raise ValueError(f"engine must be one of {ENGINES}, got {engine!r}")
     nb = jupytext.read(source, fmt="py:percent")
     nb.metadata["kernelspec"] = {
         "name": "python3",
@@ -135,18 +148,12 @@ def render_notebook(
         "language": "python",
     }
     inject_parameters(nb, parameters)
-    # the kernel talks to us over Unix sockets in a private temporary folder (IPC), not
-    # over plain-text TCP (which the kernel warns about on every report)
-    with tempfile.TemporaryDirectory(prefix="abglib-kernel-") as sockets:
-        km = KernelManager(kernel_name="python3", transport="ipc", ip=str(Path(sockets) / "kernel"))
-        client = nbclient.NotebookClient(
-            nb, km=km, timeout=timeout, resources={"metadata": {"path": str(cwd)}}
-        )
-        try:
-            client.execute()
-        finally:
-            if km.has_kernel:
-                km.shutdown_kernel(now=False)
+    if engine == "inprocess":
+        from .execute import execute_notebook
+
+        execute_notebook(nb, cwd=cwd, timeout=timeout)
+    else:
+        _execute_in_kernel(nb, cwd, timeout)
     removed = strip_volatile(nb)
     if log is not None:
         for text in removed:
@@ -161,6 +168,27 @@ def render_notebook(
             "pass relative paths to the notebook"
         )
     write_text(html_path, body)
+
+
+def _execute_in_kernel(nb, cwd, timeout) -> None:
+    """Execute ``nb`` in a Jupyter kernel (a new process) through nbclient."""
+    import tempfile
+
+    import nbclient
+    from jupyter_client import KernelManager
+
+    # the kernel talks to us over Unix sockets in a private temporary folder (IPC), not
+    # over plain-text TCP (which the kernel warns about on every report)
+    with tempfile.TemporaryDirectory(prefix="abglib-kernel-") as sockets:
+        km = KernelManager(kernel_name="python3", transport="ipc", ip=str(Path(sockets) / "kernel"))
+        client = nbclient.NotebookClient(
+            nb, km=km, timeout=timeout, resources={"metadata": {"path": str(cwd)}}
+        )
+        try:
+            client.execute()
+        finally:
+            if km.has_kernel:
+                km.shutdown_kernel(now=False)
 
 
 def report_context(
