@@ -46,12 +46,23 @@ PRELOAD = [
     "matplotlib",
     "matplotlib.pyplot",
     "numba",
+    # multiprocessing runs the main script again in every worker (the fork server's
+    # "__main__" preload does not take: it looks for a key the preparation data lacks,
+    # CPython 3.11), and Snakemake's main script imports snakemake.cli: ~1 s a job unless
+    # the server has it already
+    "snakemake.cli",
     "snakemake.io",
     "abglib",
     "abglib.analysis",
     "abglib.bench",
     "abglib.replications",
+    "jupytext",
+    "nbformat",
+    "IPython.core.interactiveshell",
     "abglib.reporting.compare",
+    "abglib.reporting.execute",
+    "abglib.reporting.notebook",
+    "abglib.reporting.page",
     "abglib.reporting.pipeline",
     "abglib.reporting.plotting",
     "abglib.reporting.render",
@@ -80,8 +91,8 @@ def _context():
         if _CONTEXT is None:
             os.environ.setdefault("MPLBACKEND", "Agg")
             ctx = multiprocessing.get_context("forkserver")
-            # "__main__" first: the server loads the main script (Snakemake's entry point)
-            # once, so a worker does not run it again, as multiprocessing otherwise does
+            # "__main__": the server loads the main script once (where multiprocessing
+            # honours it), so that a worker need not run it again
             ctx.set_forkserver_preload(["__main__", *PRELOAD])
             _CONTEXT = ctx
     return _CONTEXT
