@@ -36,6 +36,30 @@ def test_dry_run_writes_nothing_under_reports():
     assert any(f.startswith("results/reports/v") for f in written)
 
 
+def test_parsing_the_workflow_imports_no_numerics_beyond_numpy():
+    """Every abglib module the rule files import while Snakemake parses them stays light
+    (no scipy, pandas, matplotlib or numba), so that a build with nothing to do is quick:
+    the science is imported by the jobs, in their worker processes."""
+    import re
+
+    modules = set()
+    for smk in sorted((REPO / "workflow" / "rules").glob("*.smk")):
+        for line in smk.read_text(encoding="utf-8").splitlines():
+            m = re.match(r"(?:from (abglib[\w.]*) import|import (abglib[\w.]*))", line)
+            if m:
+                modules.add(m.group(1) or m.group(2))
+    assert "abglib.reporting.workers" in modules and "abglib.bench.variants" in modules
+    code = (
+        f"import sys; sys.path.insert(0, {str(REPO)!r})\n"
+        + "".join(f"import {m}\n" for m in sorted(modules))
+        + "heavy = sorted({m.split('.')[0] for m in sys.modules} & "
+        "{'scipy', 'pandas', 'matplotlib', 'numba'})\n"
+        "assert not heavy, heavy\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr[-2000:]
+
+
 # ------------------------------------------------------------------ what an edit reruns
 # A copy of the repository is built (a few targets of the small config: one document's
 # study, claims and report, one dataset, one benchmark cell), then edited; `snakemake -n`
