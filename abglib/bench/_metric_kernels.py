@@ -27,51 +27,56 @@ BUFSIZE = 8192
 @njit(cache=True, nogil=True)
 def _leaf(a, lo, n):
     """numpy's ``pairwise_sum`` of ``a[lo:lo+n]`` for ``n <= 128`` (8 accumulators)."""
+    v = a[lo : lo + n]  # a view indexed from 0: the loop vectorises
     if n < 8:
         res = 0.0
-        for i in range(lo, lo + n):
-            res += a[i]
+        for i in range(n):
+            res += v[i]
         return res
-    r0, r1, r2, r3 = a[lo], a[lo + 1], a[lo + 2], a[lo + 3]
-    r4, r5, r6, r7 = a[lo + 4], a[lo + 5], a[lo + 6], a[lo + 7]
+    r0, r1, r2, r3 = v[0], v[1], v[2], v[3]
+    r4, r5, r6, r7 = v[4], v[5], v[6], v[7]
     m = n - (n % 8)
-    i = 8
-    while i < m:
-        j = lo + i
-        r0 += a[j]
-        r1 += a[j + 1]
-        r2 += a[j + 2]
-        r3 += a[j + 3]
-        r4 += a[j + 4]
-        r5 += a[j + 5]
-        r6 += a[j + 6]
-        r7 += a[j + 7]
-        i += 8
+    for i in range(8, m, 8):
+        r0 += v[i]
+        r1 += v[i + 1]
+        r2 += v[i + 2]
+        r3 += v[i + 3]
+        r4 += v[i + 4]
+        r5 += v[i + 5]
+        r6 += v[i + 6]
+        r7 += v[i + 7]
     res = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
-    while i < n:
-        res += a[lo + i]
-        i += 1
+    for i in range(m, n):
+        res += v[i]
     return res
 
 
 @njit(cache=True, nogil=True)
-def _pairwise(a, lo, n, wi, wf):
-    """numpy's pairwise sum of the 1-D contiguous ``a[lo:lo+n]`` (``DOUBLE_pairwise_sum``:
-    ``sum(a[:h]) + sum(a[h:])`` with ``h`` half of ``n`` rounded down to a multiple of 8,
-    leaves of at most 128 values). The recursion runs on an explicit stack in the
-    workspace ``wi``, ``wf`` (:func:`workspace`): numba's disk cache does not reload
-    self-recursive functions safely."""
-    if n <= 128:
-        return _leaf(a, lo, n)
-    # frame d: start wi[0, d], length wi[1, d], stage wi[2, d] (0 new, 1 left half
-    # pending, 2 right half pending), the left half's sum wf[d]
+def _tree(a, lo, n, wi, wf, mode, plan):
+    """numpy's pairwise sum of ``n`` values (``DOUBLE_pairwise_sum``: ``sum(v[:h]) +
+    sum(v[h:])`` with ``h`` half of ``n`` rounded down to a multiple of 8, leaves of at
+    most 128 values), on an explicit stack in the workspace ``wi``, ``wf``
+    (:func:`workspace`; numba's disk cache does not reload self-recursive functions
+    safely). The leaves come left to right; ``mode`` says what a leaf is:
+
+    * 0: the values ``a[lo:lo+n]`` themselves (returns the sum);
+    * 1: the next entry of ``a``, a leaf's sum computed beforehand (returns the sum);
+    * 2: write each leaf's length to ``plan`` (returns the number of leaves).
+    """
     sp = 0
     wi[0, 0], wi[1, 0], wi[2, 0] = lo, n, 0
     ret = 0.0
+    idx = 0
     while sp >= 0:
         fl, fn, stage = wi[0, sp], wi[1, sp], wi[2, sp]
         if stage == 0 and fn <= 128:
-            ret = _leaf(a, fl, fn)
+            if mode == 0:
+                ret = _leaf(a, fl, fn)
+            elif mode == 1:
+                ret = a[idx]
+            else:
+                plan[idx] = fn
+            idx += 1
             sp -= 1
             continue
         h = fn // 2
@@ -88,7 +93,34 @@ def _pairwise(a, lo, n, wi, wf):
         else:  # both halves done
             ret = wf[sp] + ret
             sp -= 1
-    return ret
+    return float(idx) if mode == 2 else ret
+
+
+@njit(cache=True, nogil=True)
+def _pairwise(a, lo, n, wi, wf):
+    """numpy's pairwise sum of the 1-D contiguous ``a[lo:lo+n]`` (:func:`_tree`)."""
+    if n <= 128:
+        return _leaf(a, lo, n)
+    return _tree(a, lo, n, wi, wf, 0, wi[0])
+
+
+@njit(cache=True, nogil=True)
+def _plan(n, wi, wf):
+    """The leaf lengths of the pairwise sum of ``n`` values, in order."""
+    plan = np.empty(n // 32 + 8, dtype=np.int64)  # leaves hold >= 64 values but the last
+    if n <= 128:
+        plan[0] = n
+        return plan[:1]
+    k = int(_tree(wf, 0, n, wi, wf, 2, plan))
+    return plan[:k]
+
+
+@njit(cache=True, nogil=True)
+def _combine(sums, n, wi, wf):
+    """The pairwise sum of ``n`` values from its leaves' sums ``sums`` (:func:`_plan`)."""
+    if n <= 128:
+        return sums[0]
+    return _tree(sums, 0, n, wi, wf, 1, wi[0])
 
 
 def workspace():
@@ -111,72 +143,107 @@ def _value(src, acc, mode, dt, r, j):
 
 
 @njit(cache=True, nogil=True)
-def score(
-    src, acc, mode, nsrc, nacc, has_nz, dt, truth, b, n_vrf, s2, eu, eu_first, e, s, sn, sl, vrf,
-    wi, wf,
-):  # fmt: skip
+def score(src, acc, mode, nsrc, nacc, has_nz, dt, truth, b, n_vrf, s2, eu, eu_first, vrf, wi, wf):
     """One output of one coordinate over a chunk of runs (rows).
 
     ``src``/``acc``/``mode``: the estimate (:func:`_value`); ``nsrc``/``nacc``: the same
     output of the tracked noise (read if ``has_nz``); ``truth`` (R, n); ``b`` the burn-in;
     ``n_vrf`` (>= ``b``) the first sample of the VRF window (< 0: none), ``s2`` the noise
     variance; ``eu`` (R * (n - b),) the Euclidean accumulator (set if ``eu_first``, else
-    added to); ``e``, ``s``, ``sn``, ``sl`` scratch (R * (n - b),): the error, its
-    square, the noise part's and the lag part's squares; ``vrf`` (R,) written with the
-    per-run VRFs; ``wi``, ``wf`` :func:`workspace`.
+    added to); ``vrf`` (R,) written with the per-run VRFs; ``wi``, ``wf``
+    :func:`workspace`.
 
     Returns ``(finite, sum of squares, sum, max |error|, noise sum of squares, lag sum of
-    squares)`` of the error after the burn-in, each as the numpy form computes it.
+    squares)`` of the error after the burn-in, each as the numpy form computes it: the
+    values of each leaf of numpy's pairwise sums are computed into small buffers (no
+    array-sized temporaries) and the leaves' sums combined in numpy's order.
     """
     rows, n = truth.shape
     c = n - b
+    k = rows * c
     finite = True
     nan = False
     mx = 0.0
-    k = 0
-    for r in range(rows):
-        for j in range(b, n):
+    bx, bs, bn, bl = np.empty(128), np.empty(128), np.empty(128), np.empty(128)
+    # the error's square, the noise part's and the lag part's: one pairwise sum each over
+    # the k values in row order (numpy sums contiguous temporaries in one piece)
+    plan = _plan(k, wi, wf)
+    sum_s, sum_n, sum_l = np.empty(plan.size), np.empty(plan.size), np.empty(plan.size)
+    r, j, q = 0, b, 0
+    for li in range(plan.size):
+        m = plan[li]
+        for t in range(m):
             x = _value(src, acc, mode, dt, r, j) - truth[r, j]
-            e[k] = x
+            bx[t] = x
             sq = x * x
-            s[k] = sq
+            bs[t] = sq
             if eu_first:
-                eu[k] = sq
+                eu[q] = sq
             else:
-                eu[k] = eu[k] + sq
+                eu[q] = eu[q] + sq
             if has_nz:
                 y = _value(nsrc, nacc, mode, dt, r, j)
-                sn[k] = y * y
+                bn[t] = y * y
                 u = x - y
-                sl[k] = u * u
+                bl[t] = u * u
             if not math.isfinite(x):
                 finite = False
                 nan = nan or math.isnan(x)
             ax = abs(x)
             if ax > mx:
                 mx = ax
-            k += 1
+            q += 1
+            j += 1
+            if j == n:
+                j = b
+                r += 1
+        sum_s[li] = _leaf(bs, 0, m)
+        if has_nz:
+            sum_n[li] = _leaf(bn, 0, m)
+            sum_l[li] = _leaf(bl, 0, m)
     if nan:
         mx = np.nan
-    total_sq = 0.0 + _pairwise(s, 0, k, wi, wf)
-    # the sum of a strided view (b > 0): chunks of whole rows of at most BUFSIZE values;
-    # with no burn-in the error is contiguous, one chunk
-    per = max(1, BUFSIZE // c) * c if b > 0 else max(k, 1)
-    total = 0.0
-    lo = 0
-    while lo < k:
-        m = min(per, k - lo)
-        total += _pairwise(e, lo, m, wi, wf)
-        lo += m
+    total_sq = 0.0 + _combine(sum_s, k, wi, wf)
     noise_sq = 0.0
     lag_sq = 0.0
     if has_nz:
-        noise_sq = 0.0 + _pairwise(sn, 0, k, wi, wf)
-        lag_sq = 0.0 + _pairwise(sl, 0, k, wi, wf)
-        if n_vrf >= 0:
-            w = n - n_vrf
-            for r in range(rows):
-                vrf[r] = ((0.0 + _pairwise(sn, r * c + (n_vrf - b), w, wi, wf)) / w) / s2
+        noise_sq = 0.0 + _combine(sum_n, k, wi, wf)
+        lag_sq = 0.0 + _combine(sum_l, k, wi, wf)
+    # the error's sum: numpy sums the strided view (b > 0) in chunks of whole rows of at
+    # most BUFSIZE values; with no burn-in the error is contiguous, one chunk
+    per = max(1, BUFSIZE // c) * c if b > 0 else k
+    total = 0.0
+    r, j, lo = 0, b, 0
+    while lo < k:
+        size = min(per, k - lo)
+        cplan = _plan(size, wi, wf)
+        csum = np.empty(cplan.size)
+        for li in range(cplan.size):
+            m = cplan[li]
+            for t in range(m):
+                bx[t] = _value(src, acc, mode, dt, r, j) - truth[r, j]
+                j += 1
+                if j == n:
+                    j = b
+                    r += 1
+            csum[li] = _leaf(bx, 0, m)
+        total += _combine(csum, size, wi, wf)
+        lo += size
+    # per run: the mean square of the noise part over the VRF window
+    if has_nz and n_vrf >= 0:
+        w = n - n_vrf
+        wplan = _plan(w, wi, wf)
+        wsum = np.empty(wplan.size)
+        for r in range(rows):
+            j = n_vrf
+            for li in range(wplan.size):
+                m = wplan[li]
+                for t in range(m):
+                    y = _value(nsrc, nacc, mode, dt, r, j)
+                    bn[t] = y * y
+                    j += 1
+                wsum[li] = _leaf(bn, 0, m)
+            vrf[r] = ((0.0 + _combine(wsum, w, wi, wf)) / w) / s2
     return finite, total_sq, total, mx, noise_sq, lag_sq
 
 

@@ -477,7 +477,6 @@ def _score_fast(res, nres, o, dt, truth, burn_in, n_vrf, vrf_window, s2, eu_prev
     dummy = _scratch(scratch, "dummy", (1, 1))
     if "ws" not in scratch:
         scratch["ws"] = _metric_kernels.workspace()
-    size = rows * (n - burn_in)
     first = np.ndim(eu_prev) == 0
     eu_buf = np.empty((rows, n - burn_in)) if first else eu_prev
     nsrc, nacc = (nops[0], nops[1]) if nops else (dummy, None)
@@ -497,7 +496,6 @@ def _score_fast(res, nres, o, dt, truth, burn_in, n_vrf, vrf_window, s2, eu_prev
         float(s2),
         eu_buf.reshape(-1),
         first,
-        *(_scratch(scratch, k, (size,)) for k in ("e", "s", "sn", "sl")),
         vrf_runs,
         *scratch["ws"],
     )
