@@ -312,8 +312,10 @@ def _block2(s0, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
 
 # Drivers: the series in blocks of LANES, the leftover series one by one; the ``_par``
 # twins hand the blocks to numba's thread pool (each block owns its rows: no races).
+# All release the GIL (nogil): two threads of a process (Snakemake's in-process jobs)
+# track at the same time instead of taking turns.
 # The arguments are those of _block3 / _block2 after the first.
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def run3(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
     nblk = rz.shape[0] // LANES
     for k in range(nblk + rz.shape[0] % LANES):
@@ -323,7 +325,7 @@ def run3(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
             _one3(nblk * (LANES - 1) + k, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, parallel=True, nogil=True)
 def run3_par(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
     nblk = rz.shape[0] // LANES
     for k in prange(nblk + rz.shape[0] % LANES):
@@ -333,7 +335,7 @@ def run3_par(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
             _one3(nblk * (LANES - 1) + k, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def run2(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
     nblk = rz.shape[0] // LANES
     for k in range(nblk + rz.shape[0] % LANES):
@@ -343,7 +345,7 @@ def run2(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
             _one2(nblk * (LANES - 1) + k, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, parallel=True, nogil=True)
 def run2_par(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
     nblk = rz.shape[0] // LANES
     for k in prange(nblk + rz.shape[0] % LANES):

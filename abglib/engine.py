@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import functools
 import math
+import mmap
 import threading
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -34,6 +35,8 @@ _POINTS = {"zero": 0, "two_point": 2, "three_point": 3}
 # series the batched kernel advances together (abglib._kernels.LANES, kept here so that
 # importing abglib does not import numba)
 _LANES = 4
+# zero arrays at least this large are mapped lazily (_zeros)
+_LAZY_ZEROS_BYTES = 1 << 20
 # below this many samples (series x n) the batched kernel runs on one thread
 _PARALLEL_SAMPLES = 1 << 16
 # one threaded kernel at a time in a process: numba's workqueue threading layer (the one
@@ -353,9 +356,8 @@ def track(
         if name in user:
             buffers[name] = user[name]
         elif name == "a_smooth" and order == 2:
-            # an alpha-beta tracker's acceleration stays exactly zero (np.zeros maps zero
-            # pages lazily, so an unread a_smooth costs nothing)
-            buffers[name] = np.zeros(full)
+            # an alpha-beta tracker's acceleration stays exactly zero
+            buffers[name] = _zeros(full)
         else:
             buffers[name] = np.empty(full)
     if order == 2 and "a_smooth" in user:
@@ -366,6 +368,21 @@ def track(
     else:
         _run_series(order, operands, full, state0, npoints, buffers)
     return TrackResult(**{k: buffers.get(k) for k in OUTPUTS})
+
+
+def _zeros(shape) -> np.ndarray:
+    """A new writeable float64 array of zeros that costs nothing until it is touched.
+
+    Large ones (>= :data:`_LAZY_ZEROS_BYTES`) are mapped straight from the operating
+    system's zero pages (an anonymous ``mmap`` of their own): no page is faulted or
+    cleared until it is read or written. ``np.zeros`` gets its memory from ``calloc``,
+    which clears recycled heap memory page by page (an 8 MB array costs ~0.2 ms), a cost
+    the alpha-beta path paid on every call for an output nobody may read.
+    """
+    size = math.prod(shape) * 8
+    if size < _LAZY_ZEROS_BYTES:
+        return np.zeros(shape)
+    return np.frombuffer(mmap.mmap(-1, size), dtype=np.float64).reshape(shape)
 
 
 # --------------------------------------------------------------------------- drivers

@@ -264,6 +264,9 @@ def _m4_series(z, a0, b0, window, grid, bgrid, dt, xp, used):  # pragma: no cove
     nb, n = z.shape
     g = grid.size
     xs, vs, cost = np.empty(n), np.empty(n), np.empty(g)
+    xq, vq, gbd = np.empty(g), np.empty(g), np.empty(g)
+    for q in range(g):
+        gbd[q] = bgrid[q] / dt
     for i in range(nb):
         xs[0], vs[0], xp[i, 0], used[i, 0] = z[i, 0], 0.0, z[i, 0], np.nan
         xs[1], vs[1], xp[i, 1], used[i, 1] = z[i, 1], (z[i, 1] - z[i, 0]) / dt, z[i, 1], np.nan
@@ -276,15 +279,19 @@ def _m4_series(z, a0, b0, window, grid, bgrid, dt, xp, used):  # pragma: no cove
             vs[k] = vs[k - 1] + (b / dt) * r
             s = k - window + 1
             if s >= 2 and k + 1 < n:
+                # every grid alpha over the window, all of them advanced together sample
+                # by sample (independent recursions: the loop over q vectorises; each
+                # q's arithmetic is the same sequence as one q at a time)
                 for q in range(g):
-                    x, v, c, gbd = xs[s - 1], vs[s - 1], 0.0, bgrid[q] / dt
-                    for j in range(s, k + 1):
-                        pj = x + dt * v
-                        rj = z[i, j] - pj
-                        c = c + rj * rj
-                        x = pj + grid[q] * rj
-                        v = v + gbd * rj
-                    cost[q] = c
+                    xq[q], vq[q], cost[q] = xs[s - 1], vs[s - 1], 0.0
+                for j in range(s, k + 1):
+                    zj = z[i, j]
+                    for q in range(g):
+                        pj = xq[q] + dt * vq[q]
+                        rj = zj - pj
+                        cost[q] = cost[q] + rj * rj
+                        xq[q] = pj + grid[q] * rj
+                        vq[q] = vq[q] + gbd[q] * rj
                 best = 0
                 for q in range(g):
                     if np.isnan(cost[q]):

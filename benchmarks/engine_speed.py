@@ -18,6 +18,13 @@ abglib rows, each a call of ``abglib.track`` over the whole case:
   kernel's zeroing of fresh memory pages (320 MB a call in the batch case);
 * ``x_smooth only``: ``outputs=("x_smooth",)``, fresh.
 
+A reference row, ``numpy, 4 fresh arrays: np.empty + fill``, times numpy alone allocating
+four new arrays of the case's shape and filling each (``np.empty(shape).fill(0.0)``,
+one thread): no tracking at all, only what the operating system charges for fresh pages
+(faulting and zeroing 320 MB a call in the batch case). A fresh-array row of abglib
+cannot be much faster than this floor on one core; the batched kernel first-touches its
+outputs from all of numba's threads, so it can beat it only by spreading those faults.
+
 Peers, on the same data and converted gains (:mod:`abglib.conventions`):
 
 * alpha-beta: ``filterpy.gh.GHFilter.batch_filter`` (FilterPy's fastest alpha-beta path);
@@ -97,6 +104,19 @@ def filterpy_run(z, gains: Gains, dt: float):
     return np.array([f.update(zi)[0] for zi in z])
 
 
+FRESH_FLOOR = "numpy, 4 fresh arrays: np.empty + fill"
+
+
+def _fresh_fill(shape):
+    """Four new arrays of ``shape``, each filled once by numpy: the fresh pages' cost."""
+    out = []
+    for _ in ALL:
+        a = np.empty(shape)
+        a.fill(0.0)
+        out.append(a)
+    return out
+
+
 def _time(fn, repeats=1):
     times = []
     for _ in range(repeats):
@@ -142,6 +162,18 @@ def run(quick: bool = False, repeats: int = 5) -> pd.DataFrame:
                         max_rel_diff=0.0,
                     )
                 )
+            secs, _ = _time(lambda: _fresh_fill(z.shape), repeats)  # noqa: B023
+            rows.append(
+                dict(
+                    case=case,
+                    filter=filt,
+                    implementation=FRESH_FLOOR,
+                    samples=z.size,
+                    peer_samples=z.size,
+                    seconds=secs,
+                    max_rel_diff=0.0,
+                )
+            )
             # peers on a subset: the first series (or rows) summing to peer_samples
             flat = z.reshape(-1, z.shape[-1])
             per_row = flat.shape[1]

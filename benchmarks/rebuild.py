@@ -3,6 +3,7 @@
     python benchmarks/rebuild.py                 # default config: clean, no-op, large sweep
     python benchmarks/rebuild.py --small         # the tests' small config (clean, no-op)
     python benchmarks/rebuild.py --skip-large    # clean and no-op only
+    python benchmarks/rebuild.py --large-only    # the large sweep only
 
 Each case runs ``snakemake -c<cores>`` in a fresh working directory of its own (``-d``, under
 ``--workdir``, default a temporary directory) and is timed by the wall clock:
@@ -14,8 +15,10 @@ Each case runs ``snakemake -c<cores>`` in a fresh working directory of its own (
 
 Writes ``benchmarks/results/rebuild.csv`` (one row per case: wall time, jobs, the issue's
 target) and ``benchmarks/results/rebuild_rules.csv`` (the clean build's time per rule, from
-the rules' ``benchmark:`` files: where the time goes). On a shared machine run it under the
-machine's lock (``flock /work/cpu.lock python benchmarks/rebuild.py``).
+the rules' ``benchmark:`` files: where the time goes); ``--large-only`` writes
+``rebuild_large.csv`` and ``rebuild_rules_large.csv`` (the large sweep's time per rule).
+On a shared machine run it under the machine's lock
+(``flock /work/cpu.lock python benchmarks/rebuild.py``).
 """
 
 from __future__ import annotations
@@ -91,9 +94,12 @@ def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--small", action="store_true", help="the tests' small config")
     ap.add_argument("--skip-large", action="store_true", help="no large sweep")
+    ap.add_argument("--large-only", action="store_true", help="the large sweep only")
     ap.add_argument("--cores", type=int, default=2)
     ap.add_argument("--workdir", type=Path, default=None, help="where the builds go")
     args = ap.parse_args(argv)
+    if args.large_only and (args.small or args.skip_large):
+        ap.error("--large-only is the default config's large sweep: no --small/--skip-large")
     base = args.workdir or Path(tempfile.mkdtemp(prefix="abglib-rebuild-"))
     configs = [REPO / "config.yaml"]
     name = "default"
@@ -102,14 +108,15 @@ def main(argv=None) -> None:
         name = "small"
     rows = []
     clean = base / f"{name}-clean"
-    wall, log = run(clean, configs, args.cores)
-    rows.append(("clean", name, wall, jobs_done(log)))
-    print(f"clean build ({name}): {wall:.1f} s, {jobs_done(log)} jobs", flush=True)
-    wall, log = run(clean, configs, args.cores)
-    if "Nothing to be done" not in log:
-        raise SystemExit(f"the second run was not a no-op:\n{log[-3000:]}")
-    rows.append(("noop", name, wall, 0))
-    print(f"no-op run ({name}): {wall:.2f} s", flush=True)
+    if not args.large_only:
+        wall, log = run(clean, configs, args.cores)
+        rows.append(("clean", name, wall, jobs_done(log)))
+        print(f"clean build ({name}): {wall:.1f} s, {jobs_done(log)} jobs", flush=True)
+        wall, log = run(clean, configs, args.cores)
+        if "Nothing to be done" not in log:
+            raise SystemExit(f"the second run was not a no-op:\n{log[-3000:]}")
+        rows.append(("noop", name, wall, 0))
+        print(f"no-op run ({name}): {wall:.2f} s", flush=True)
     if not (args.small or args.skip_large):
         large = base / "large"
         target = f"results/reports/v{_version()}/benchmark/index.html"
@@ -120,7 +127,7 @@ def main(argv=None) -> None:
         rows.append(("large", f"{name}+benchmark_large", wall, jobs_done(log)))
         print(f"large sweep: {wall:.1f} s, {jobs_done(log)} jobs, {n_cells} cells", flush=True)
     OUT.mkdir(parents=True, exist_ok=True)
-    suffix = "" if name == "default" else f"_{name}"
+    suffix = "_large" if args.large_only else ("" if name == "default" else f"_{name}")
     with (OUT / f"rebuild{suffix}.csv").open("w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh, lineterminator="\n")
         w.writerow(["case", "config", "cores", "wall_s", "jobs", "target_s", "met"])
@@ -128,12 +135,13 @@ def main(argv=None) -> None:
             tgt = TARGETS[case] if name == "default" else ""
             met = "" if tgt == "" else str(wall <= tgt).lower()
             w.writerow([case, cfg, args.cores, f"{wall:.2f}", jobs, tgt, met])
-    per_rule = rule_times(clean)
+    per_rule = rule_times(base / "large" if args.large_only else clean)
     with (OUT / f"rebuild_rules{suffix}.csv").open("w", newline="", encoding="utf-8") as fh:
         w = csv.DictWriter(fh, ["rule", "jobs", "total_s", "max_s"], lineterminator="\n")
         w.writeheader()
         w.writerows(per_rule)
-    print("time per rule (clean build, benchmark: files):")
+    which = "large sweep" if args.large_only else "clean build"
+    print(f"time per rule ({which}, benchmark: files):")
     for r in per_rule[:15]:
         print(
             f"  {r['rule']:<40} {r['jobs']:>4} jobs {r['total_s']:>8.1f} s (max {r['max_s']:.1f})"

@@ -454,3 +454,21 @@ def test_buffer_errors_leave_the_buffers_alone():
     with pytest.raises(AbglibValueError, match="dtype float64"):
         track(z, Gains(0.5, 0.1), out={"x_smooth": good, "x_pred": np.empty(3, np.float32)})
     assert np.all(good == 7.0)
+
+
+def test_alpha_beta_a_smooth_is_a_writeable_zero_array_at_every_size():
+    """The alpha-beta path's a_smooth (lazily mapped zero pages when large) is a real
+    array: zeros, writeable, reusable as an out= buffer, independent between calls."""
+    z = np.random.default_rng(3).normal(size=(3, 200_000)).cumsum(axis=-1)  # 4.8 MB
+    g = Gains(0.5, 0.1)
+    for zz in (z, z[:, :50]):
+        res = track(zz, g, init="two_point")
+        a = res.a_smooth
+        assert a.shape == zz.shape and a.dtype == np.float64 and a.flags.writeable
+        assert not np.any(a)
+        a[...] = 7.0  # the caller owns it
+        again = track(zz, g, init="two_point", out=res)
+        assert again.a_smooth is a and not np.any(a)
+        other = track(zz, g, init="two_point").a_smooth
+        assert not np.shares_memory(other, a)
+        np.testing.assert_array_equal(again.x_smooth, track(zz, g, init="two_point").x_smooth)

@@ -242,3 +242,67 @@ def test_noise_description_errors_name_the_problem():
         noise_vrf(g, {"colour": "white"})
     with pytest.raises(AbglibValueError, match="needs 'rho'"):
         noise_vrf(g, {"model": "ar1"})
+
+
+def _scored(monkeypatch, fast, **kw):
+    """evaluate_cell with the compiled scoring (fast) or the numpy form only."""
+    import abglib.bench.metrics as mm
+
+    monkeypatch.setattr(mm, "_fast_scoring", lambda cols: fast)
+    return mm.evaluate_cell(**kw)
+
+
+def _same(a, b):
+    """Rows equal bit for bit (None, NaN and -0.0 included)."""
+    assert len(a) == len(b)
+    for ra, rb in zip(a, b, strict=True):
+        assert ra.keys() == rb.keys()
+        for k in ra:
+            x, y = ra[k], rb[k]
+            if isinstance(x, float) and isinstance(y, float):
+                assert np.float64(x).tobytes() == np.float64(y).tobytes(), (ra["coord"], k, x, y)
+            else:
+                assert x == y, (ra["coord"], k, x, y)
+
+
+@pytest.mark.parametrize(
+    ("runs", "n", "chunk", "burn_in", "gains", "colour"),
+    [
+        (300, 400, 128, 10, Gains(0.3, 0.05), "white"),  # strided sums in buffer chunks
+        (200, 60, 1000, 10, Gains(0.5, 0.2, 0.02), "ar1"),  # several rows per chunk
+        (50, 9000, 1000, 5, Gains(0.2, 0.02), "white"),  # rows longer than the buffer
+        (40, 97, 7, 0, Gains(0.4, 0.1, 0.01), "white"),  # no burn-in: contiguous error
+        (30, 50, 1000, 3, Gains(1.0, 2.5), "white"),  # unstable: overflow and NaN
+        (25, 80, 10, 2, Gains(np.linspace(0.9, 0.3, 80), np.linspace(0.5, 0.05, 80)), "white"),
+    ],
+)
+def test_compiled_scoring_gives_the_numpy_bits(monkeypatch, runs, n, chunk, burn_in, gains, colour):
+    """The compiled one-pass scoring (abglib.bench._metric_kernels) returns exactly the
+    bits of the numpy form it replaced, for every column of every row."""
+    rng = np.random.default_rng(runs + n)
+    t = np.arange(n, dtype=float)
+    coords = {}
+    for c, acc in (("x", 0.0), ("y", 0.3)):
+        pos = 100.0 + 20.0 * t + 0.5 * acc * t**2
+        noise = rng.standard_normal((runs, n)) * 7.0
+        coords[c] = {
+            "truth_pos": np.broadcast_to(pos, (runs, n)).copy(),
+            "truth_vel": np.broadcast_to(20.0 + acc * t, (runs, n)).copy(),
+            "z": pos + noise,
+            "sigma": 7.0,
+        }
+    kw = dict(
+        coords=coords,
+        dt=1.0,
+        gains=gains,
+        noise={"model": "white"} if colour == "white" else {"model": "ar1", "rho": 0.5},
+        burn_in=burn_in,
+        chunk_runs=chunk,
+    )
+    _same(_scored(monkeypatch, True, **kw), _scored(monkeypatch, False, **kw))
+    # a method returning predictions only (the runner path)
+    kw.pop("gains")
+    kw.pop("noise")
+    runner = lambda z: track(z, Gains(0.5, 0.1), init="two_point", outputs=("x_pred",))  # noqa: E731
+    kw["runner"] = runner
+    _same(_scored(monkeypatch, True, **kw), _scored(monkeypatch, False, **kw))

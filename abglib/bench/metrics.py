@@ -289,6 +289,8 @@ def evaluate_cell(
     eu = {o: {"sq": 0.0, "max": 0.0} for o in OUTPUTS}
     finite = True
     m = n - burn_in
+    fast = _fast_scoring(n - burn_in)
+    scratch: dict = {}
     with np.errstate(over="ignore", invalid="ignore"):
         for lo in range(0, runs, int(chunk_runs)):
             hi = min(runs, lo + int(chunk_runs))
@@ -301,34 +303,44 @@ def evaluate_cell(
                     "v": np.asarray(d["truth_vel"][lo:hi], dtype=float),
                 }
                 sigma = float(check_positive("sigma", d["sigma"]))
-                est = _estimates(track(z, gains, dt, init=init) if linear else runner(z), dt)
-                if linear:
-                    nz = _estimates(track(z - truth["x"], gains, dt, init=init), dt)
+                res = track(z, gains, dt, init=init) if linear else runner(z)
+                nres = track(z - truth["x"], gains, dt, init=init) if linear else None
+                score = _score_fast if fast else _score_numpy
                 for o in OUTPUTS:
-                    if est[o] is None:
+                    r = score(
+                        res,
+                        nres,
+                        o,
+                        dt,
+                        truth[o[0]],
+                        burn_in,
+                        n_vrf,
+                        vrf_window,
+                        sigma**2,
+                        eu_sq[o],
+                        scratch,
+                    )
+                    if r is None:
                         acc[c][o]["missing"] = True
                         continue
-                    err = (est[o] - truth[o[0]])[:, burn_in:]
-                    finite &= bool(np.all(np.isfinite(err)))
+                    ok, sq, tot, mx, noise_sq, lag_sq, vrf_runs, eu_sq[o] = r
+                    finite &= ok
                     a = acc[c][o]
-                    a["sq"] += float(np.sum(err**2))
-                    a["sum"] += float(np.sum(err))
-                    a["max"] = max(a["max"], float(np.max(np.abs(err))))
-                    eu_sq[o] = eu_sq[o] + err**2
+                    a["sq"] += sq
+                    a["sum"] += tot
+                    a["max"] = max(a["max"], mx)
                     if linear:
-                        noise_part = nz[o][:, burn_in:]
-                        lag_part = err - noise_part
-                        split[c][o]["noise_sq"] += float(np.sum(noise_part**2))
-                        split[c][o]["lag_sq"] += float(np.sum(lag_part**2))
+                        split[c][o]["noise_sq"] += noise_sq
+                        split[c][o]["lag_sq"] += lag_sq
                         if vrf_window:
-                            w = nz[o][:, n_vrf:]
-                            per_run_vrf[c][o].append(np.mean(w**2, axis=1) / sigma**2)
+                            per_run_vrf[c][o].append(vrf_runs)
             for o in OUTPUTS:
                 if np.ndim(eu_sq[o]) == 0:  # output not provided
                     eu[o]["missing"] = True
                     continue
-                eu[o]["sq"] += float(np.sum(eu_sq[o]))
-                eu[o]["max"] = max(eu[o]["max"], float(np.max(np.sqrt(eu_sq[o]))))
+                sq, mx = _euclid(eu_sq[o], fast, scratch)
+                eu[o]["sq"] += sq
+                eu[o]["max"] = max(eu[o]["max"], mx)
     diverged = (stable is False) or not finite
     common = {
         "runs": runs,
@@ -378,6 +390,128 @@ def evaluate_cell(
         _vrf_columns(row, o, [], None, ci_level)
     rows.append(row)
     return rows
+
+
+def _fast_scoring(cols: int) -> bool:
+    """Whether the compiled scoring reproduces numpy's sums for rows of ``cols`` values
+    (a strided view is summed in buffer chunks of whole rows; longer rows are split in a
+    way the kernels do not follow, so they take the numpy form)."""
+    from . import _metric_kernels
+
+    return 1 <= cols <= _metric_kernels.BUFSIZE
+
+
+def _score_numpy(res, nres, o, dt, truth, burn_in, n_vrf, vrf_window, s2, eu_prev, scratch):
+    """The metrics of output ``o`` of one coordinate over one chunk of runs, in numpy.
+
+    ``res``/``nres``: the tracker's result on the measurements and (linear trackers) on
+    the noise alone; ``eu_prev`` the Euclidean accumulator so far (0.0 or an array).
+    Returns None if the tracker does not provide ``o``, else ``(finite, sum of squares,
+    sum, max |error|, noise sum of squares, lag sum of squares, per-run VRFs or None,
+    Euclidean accumulator)``. The reference for :func:`_score_fast` (same bits)."""
+    est = _estimates(res, dt)[o]
+    if est is None:
+        return None
+    err = (est - truth)[:, burn_in:]
+    ok = bool(np.all(np.isfinite(err)))
+    sq = float(np.sum(err**2))
+    tot = float(np.sum(err))
+    mx = float(np.max(np.abs(err)))
+    eu_new = eu_prev + err**2
+    noise_sq = lag_sq = 0.0
+    vrf_runs = None
+    if nres is not None:
+        nz = _estimates(nres, dt)[o]
+        noise_part = nz[:, burn_in:]
+        lag_part = err - noise_part
+        noise_sq = float(np.sum(noise_part**2))
+        lag_sq = float(np.sum(lag_part**2))
+        if vrf_window:
+            w = nz[:, n_vrf:]
+            vrf_runs = np.mean(w**2, axis=1) / s2
+    return ok, sq, tot, mx, noise_sq, lag_sq, vrf_runs, eu_new
+
+
+def _output_operands(res, o):
+    """``(src, acc, mode)`` of :func:`abglib.bench._metric_kernels.score` for output
+    ``o`` of a tracker result (None if it does not provide it)."""
+    if o in ("x_smooth", "x_pred"):
+        src = getattr(res, o, None)
+        return None if src is None else (np.asarray(src), None, 0)
+    vs = getattr(res, "v_smooth", None)
+    if vs is None:
+        return None
+    a = getattr(res, "a_smooth", None)
+    if o == "v_smooth":
+        return np.asarray(vs), None, 0
+    return np.asarray(vs), (None if a is None else np.asarray(a)), (1 if a is None else 2)
+
+
+def _scratch(scratch: dict, key: str, shape) -> np.ndarray:
+    buf = scratch.get(key)
+    if buf is None or buf.shape != shape:
+        buf = scratch[key] = np.empty(shape)
+    return buf
+
+
+def _score_fast(res, nres, o, dt, truth, burn_in, n_vrf, vrf_window, s2, eu_prev, scratch):
+    """:func:`_score_numpy` in one compiled pass that releases the GIL (same bits)."""
+    from . import _metric_kernels
+
+    ops = _output_operands(res, o)
+    if ops is None:
+        return None
+    src, acc_arr, mode = ops
+    rows, n = truth.shape
+    nops = _output_operands(nres, o) if nres is not None else None
+    arrays = [src, truth, acc_arr, *(nops[:2] if nops else ())]
+    # the numpy form's temporaries are C-ordered (and its sums follow that order) only
+    # for C-ordered operands of one shape and a scalar dt
+    if np.ndim(dt) != 0 or not all(
+        a is None or (a.shape == truth.shape and a.dtype == np.float64 and a.flags.c_contiguous)
+        for a in arrays
+    ):
+        return _score_numpy(
+            res, nres, o, dt, truth, burn_in, n_vrf, vrf_window, s2, eu_prev, scratch
+        )
+    dummy = _scratch(scratch, "dummy", (1, 1))
+    if "ws" not in scratch:
+        scratch["ws"] = _metric_kernels.workspace()
+    first = np.ndim(eu_prev) == 0
+    eu_buf = np.empty((rows, n - burn_in)) if first else eu_prev
+    nsrc, nacc = (nops[0], nops[1]) if nops else (dummy, None)
+    want_vrf = nres is not None and vrf_window
+    vrf_runs = np.empty(rows) if want_vrf else _scratch(scratch, "vrf", (1,))
+    ok, sq, tot, mx, noise_sq, lag_sq = _metric_kernels.score(
+        src,
+        dummy if acc_arr is None else acc_arr,
+        mode,
+        nsrc,
+        dummy if nacc is None else nacc,
+        nres is not None,
+        float(dt),
+        truth,
+        burn_in,
+        n_vrf if want_vrf else -1,
+        float(s2),
+        eu_buf.reshape(-1),
+        first,
+        vrf_runs,
+        *scratch["ws"],
+    )
+    return ok, sq, tot, mx, noise_sq, lag_sq, (vrf_runs if want_vrf else None), eu_buf
+
+
+def _euclid(eu_sq: np.ndarray, fast: bool, scratch: dict) -> tuple[float, float]:
+    """``(np.sum(eu_sq), np.max(np.sqrt(eu_sq)))`` of the Euclidean accumulator."""
+    if not fast:
+        return float(np.sum(eu_sq)), float(np.max(np.sqrt(eu_sq)))
+    from . import _metric_kernels
+
+    if "ws" not in scratch:
+        scratch["ws"] = _metric_kernels.workspace()
+    sq, mx = _metric_kernels.euclid(eu_sq.reshape(-1), *scratch["ws"])
+    return float(sq), float(mx)
 
 
 def _finite(x):
