@@ -171,3 +171,36 @@ def test_tracking_table_precision():
     out = format_table(d)
     assert out.loc[0, "y"] == "<1e-10"  # the antenna at rest: below the round-off bound
     assert out.loc[1, "y"] == f"{d.loc[1, 'y']:.5g}" and out.loc[1, "e"] == f"{d.loc[1, 'e']:.5g}"
+
+
+@pytest.mark.parametrize(("order", "v_w", "res"), [(5, 5e-3, 0.1), (3, 5e-2, 0.1), (5, 5e3, 1e-6)])
+def test_time_major_kalman_loop_equals_the_phase_loop_bit_for_bit(ctrl, order, v_w, res):
+    """ensemble._kalman_loop (all phases one step at a time, vectorised) against
+    _kalman_loop_by_phase (one phase after the other): the same operations per phase, so the
+    same bits, the quantiser's decisions included."""
+    from abglib.replications.antenna import ensemble
+
+    calls = []
+    real = ensemble._kalman_loop
+
+    def spy(*args):
+        calls.append(args)
+        return real(*args)
+
+    ensemble._kalman_loop = spy
+    try:
+        ensemble.simulate_phases(
+            NOMINAL, ctrl, amplitude=1.0, omega=0.3, n_steps=300, mode="kalman",
+            phases=ensemble.phase_grid(7), order=order, v_w=v_w, v_v=VV, resolution=res,
+        )  # fmt: skip
+    finally:
+        ensemble._kalman_loop = real
+    (args,) = calls
+    outs = []
+    for loop in (ensemble._kalman_loop, ensemble._kalman_loop_by_phase):
+        y, u, err = (np.full_like(a, 7.0) for a in args[-3:])
+        loop(*args[:-3], y, u, err)
+        outs.append((y, u, err))
+    for a, b in zip(*outs, strict=True):
+        assert a.tobytes() == b.tobytes()
+    assert np.unique(np.round(outs[0][0] / 0.1)).size > 10  # the run moved

@@ -236,3 +236,19 @@ def test_a_zero_tolerance_override_is_refused():
     overrides = {"x.value": {"tolerance": 0.0, "reason": "none"}}
     with pytest.raises(AbglibValueError, match="must be > 0, got 0.0"):
         evaluate("toy", CLAIMS, PUB, study, lambda c: ToyStudy(c, PUB), overrides)
+
+
+def test_one_blas_thread_limits_every_loaded_openblas():
+    """The studies run their thousands of tiny BLAS/LAPACK calls on one thread (scipy's own
+    OpenBLAS included, which numpy's import alone does not load), and the limit is lifted
+    on exit."""
+    from threadpoolctl import threadpool_info
+
+    from abglib.replications import one_blas_thread
+
+    with one_blas_thread():
+        inside = [i for i in threadpool_info() if i["user_api"] == "blas"]
+        assert len(inside) >= 2  # numpy's and scipy's OpenBLAS
+        assert all(i["num_threads"] == 1 for i in inside)
+    after = {i["filepath"]: i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"}
+    assert set(after) == {i["filepath"] for i in inside}

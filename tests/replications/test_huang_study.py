@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pandas as pd
 import pytest
 import scipy.optimize
 from hypothesis import given, settings
@@ -297,3 +298,31 @@ def test_range_only_start_adds_the_free_response_to_the_rate():
         huang.simulate_range_track(
             {"g": g}, T, 30, 0.0, 0.0, 1.0, seed=3, initial_range_error=np.nan
         )
+
+
+def test_tables_are_shared_across_simulation_variants_and_copied():
+    """The claims re-judge the study at many simulation inputs: Tables 1-2 and the ENBW
+    routes (radar and printed tables only) are computed once per process, each study gets
+    its own copy, and another F_r recomputes them."""
+    from abglib.replications._claims import config_with
+    from abglib.replications.huang import study as hs
+
+    from .conftest import repo_config, study_for
+
+    cfg = repo_config()
+    a = study_for("huang", cfg)
+    b = study_for("huang", config_with(cfg, "huang.simulation.duration_s", 40.0))
+    ta, tb = a.table_rows, b.table_rows
+    assert ta is not tb
+    pd.testing.assert_frame_equal(ta, tb)
+    ta.loc[ta.index[0], "enbw_exact"] = -1.0  # a study mutating its copy
+    assert b.table_rows.iloc[0]["enbw_exact"] > 0.0
+    assert study_for("huang", cfg).table_rows.iloc[0]["enbw_exact"] > 0.0
+    key = ("table_rows", a._cells_key)
+    assert key in hs._SHARED
+    c = study_for("huang", config_with(cfg, "huang.radar.fr_hz", 150.0))
+    assert c._cells_key != a._cells_key
+    assert c.dt == pytest.approx(2 * T)
+    # the table at 150 Hz is its own: the 2 Hz type I ENBW of the printed gains doubles
+    row_a, row_c = b.table_rows.loc["t1.ab.2hz"], c.table_rows.loc["t1.ab.2hz"]
+    assert row_c["enbw_exact"] == pytest.approx(row_a["enbw_exact"] / 2, rel=1e-12)

@@ -114,6 +114,73 @@ def _matvec(m, v, out):
 
 @njit(cache=True)
 def _kalman_loop(a, b, c, k, kt, af, kf, be, xt, res, y, u, err):
+    # time-major: every phase advances one step at a time, the phases in the innermost loops
+    # (independent lanes the compiler vectorises); each phase sees exactly the operations of
+    # _kalman_loop_by_phase in the same order, so the results are bit for bit the same
+    n_ph, p, n_steps = xt.shape
+    na = a.shape[0]
+    ne = af.shape[0]
+    x = np.zeros((na, n_ph))
+    xn = np.zeros((na, n_ph))
+    xh = np.zeros((ne, n_ph))
+    xhn = np.zeros((ne, n_ph))
+    yv = np.zeros(n_ph)
+    uv = np.zeros(n_ph)
+    m0 = np.zeros(n_ph)
+    m1 = np.zeros(n_ph)
+    for j in range(p):
+        for ph in range(n_ph):
+            xh[na + j, ph] = xt[ph, j, 0]  # initial estimate = real state (sec. 8.1)
+    for i in range(n_steps):
+        for ph in range(n_ph):
+            yv[ph] = 0.0
+            uv[ph] = 0.0
+        for r in range(na):
+            cr = c[r]
+            for ph in range(n_ph):
+                yv[ph] += cr * x[r, ph]
+        for r in range(na):
+            kr = k[r]
+            for ph in range(n_ph):
+                uv[ph] -= kr * x[r, ph]
+        for j in range(p):
+            ktj = kt[j]
+            for ph in range(n_ph):
+                err[ph, j, i] = xh[na + j, ph] - xt[ph, j, i]
+                uv[ph] -= ktj * xh[na + j, ph]
+        for ph in range(n_ph):
+            y[ph, i] = yv[ph]
+            u[ph, i] = uv[ph]
+            m0[ph] = _rint(x[1, ph] / res) * res
+            m1[ph] = _rint((yv[ph] - xt[ph, 0, i]) / res) * res
+        for r in range(ne):
+            for ph in range(n_ph):
+                xhn[r, ph] = 0.0
+            for cc in range(ne):
+                m = af[r, cc]
+                for ph in range(n_ph):
+                    xhn[r, ph] += m * xh[cc, ph]
+            ber, kf0, kf1 = be[r], kf[r, 0], kf[r, 1]
+            for ph in range(n_ph):
+                xhn[r, ph] += ber * uv[ph] + kf0 * m0[ph] + kf1 * m1[ph]
+        for r in range(na):
+            for ph in range(n_ph):
+                xn[r, ph] = 0.0
+            for cc in range(na):
+                m = a[r, cc]
+                for ph in range(n_ph):
+                    xn[r, ph] += m * x[cc, ph]
+            br = b[r]
+            for ph in range(n_ph):
+                xn[r, ph] += br * uv[ph]
+        xh, xhn = xhn, xh
+        x, xn = xn, x
+
+
+@njit(cache=True)
+def _kalman_loop_by_phase(a, b, c, k, kt, af, kf, be, xt, res, y, u, err):
+    # the reference loop, one phase after the other (tests: _kalman_loop must equal it bit
+    # for bit)
     n_ph, p, n_steps = xt.shape
     na = a.shape[0]
     ne = af.shape[0]

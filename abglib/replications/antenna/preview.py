@@ -57,9 +57,24 @@ def _stein_rhs(tm: TrackerMatrices, at, ct):
 
 
 def preview_gain(tm: TrackerMatrices, at, ct, method="kron"):
-    """Object-state gain ``Kt = Kv X`` of ``u_0 = -K x_0 - Kt x_t0`` (eq 4.5)."""
-    x = stein_solve(tm.Ag, at, _stein_rhs(tm, at, ct), method=method)
-    return tm.Kv @ x
+    """Object-state gain ``Kt = Kv X`` of ``u_0 = -K x_0 - Kt x_t0`` (eq 4.5), memoised on
+    the bytes of what it reads (a sweep over omega or V_w previews with the same design and
+    object model thousands of times); a fresh copy each call."""
+    at, ct = np.asarray(at, dtype=float), np.atleast_2d(np.asarray(ct, dtype=float))
+    key = (method,) + tuple((m.shape, m.tobytes()) for m in (tm.Ag, tm.Cg, tm.Kv, at, ct))
+    hit = _PREVIEW.get(key)
+    if hit is None:
+        x = stein_solve(tm.Ag, at, _stein_rhs(tm, at, ct), method=method)
+        hit = tm.Kv @ x
+        if len(_PREVIEW) >= _PREVIEW_SIZE:
+            _PREVIEW.pop(next(iter(_PREVIEW)))
+        _PREVIEW[key] = hit
+    return hit.copy()
+
+
+#: :func:`preview_gain`'s memo (oldest entry dropped beyond the size).
+_PREVIEW: dict = {}
+_PREVIEW_SIZE = 4096
 
 
 def preview_series(tm: TrackerMatrices, at, ct, n: int):

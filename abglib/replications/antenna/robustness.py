@@ -54,17 +54,25 @@ def stable_interval(nominal, name, dt, q, r, order, v_w, v_v, grid, tol=1e-9, ra
     def excess(f):
         return radius(f) - 1.0 - tol
 
-    ex = np.array([excess(f) for f in grid])
+    # evaluated on demand: the walk from 1 outwards reads the grid only up to each edge
+    # (a radius costs an LQ design and a Kalman design)
+    seen: dict[int, float] = {}
+
+    def ex(j: int) -> float:
+        if j not in seen:
+            seen[j] = excess(grid[j])
+        return seen[j]
+
     i1 = int(np.argmin(np.abs(grid - 1.0)))
     out = []
     for step, stop in ((-1, -1), (1, len(grid))):
         j, edge = i1, np.nan
         while j + step != stop:
-            if ex[j] <= 0.0 < ex[j + step]:
+            if ex(j) <= 0.0 < ex(j + step):
                 a, b = sorted((grid[j], grid[j + step]))
                 edge = scipy.optimize.brentq(excess, a, b, xtol=1e-6 * a)
                 break
-            if ex[j + step] > 0.0:
+            if ex(j + step) > 0.0:
                 break
             j += step
         out.append(edge)

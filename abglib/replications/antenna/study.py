@@ -283,9 +283,16 @@ class AntennaStudy(Study):
         k = self.cfg["kalman"]
         return vw_search_table(lambda o, v: self.stats(o, v), k["orders"], k["vw_exponents"])
 
+    @cached_property
+    def _vw_optima(self) -> dict:
+        return {}
+
     def vw_optimum(self, order, key="e_max") -> float:
-        """Printed V_w minimising the median ``key`` of the normal track (grid 5 x 10^k)."""
-        return optimum(self.vw_search, order, key)
+        """Printed V_w minimising the median ``key`` of the normal track (grid 5 x 10^k),
+        memoised (every spectral radius of app. H reads it)."""
+        if (order, key) not in self._vw_optima:
+            self._vw_optima[order, key] = optimum(self.vw_search, order, key)
+        return self._vw_optima[order, key]
 
     @property
     def vw_opt5(self) -> float:

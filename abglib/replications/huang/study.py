@@ -50,6 +50,19 @@ TABLE_CELLS = {
 #: printed formula for one pulse (``F_r / B_n = 1``), sqrt 2 larger.
 NOISE = ("barton", "printed_single_pulse")
 
+#: Results that depend on the radar and the printed tables only, shared by every study of
+#: the process: the claims re-judge the study at many values of the assumed simulation
+#: inputs (gate, start, initial error, v0, noise, duration), none of which they read.
+_SHARED: dict = {}
+
+
+def _shared(key, compute):
+    """``compute()``, memoised under ``key`` for the process (the caller copies what it
+    could mutate)."""
+    if key not in _SHARED:
+        _SHARED[key] = compute()
+    return _SHARED[key]
+
 
 class HuangStudy(Study):
     """Seed 002 from the ``huang`` config section and the printed Tables 1-2."""
@@ -128,9 +141,17 @@ class HuangStudy(Study):
         return out
 
     @cached_property
+    def _cells_key(self) -> tuple:
+        """What :attr:`table_rows` and :attr:`routes` read: ``T`` and the printed cells."""
+        return (self.dt, tuple(tuple(sorted(c.items())) for c in self.cells))
+
+    @cached_property
     def table_rows(self) -> pd.DataFrame:
         """Tables 1-2 cell by cell (:func:`.enbw_tables.table_row`), indexed by cell,
         with the ENBW of an unstable set read with the canonical gamma (no factor 2)."""
+        return _shared(("table_rows", self._cells_key), self._table_rows).copy()
+
+    def _table_rows(self) -> pd.DataFrame:
         rows = []
         for c in self.cells:
             row = {"cell": c["base"]}
@@ -172,6 +193,9 @@ class HuangStudy(Study):
         """ENBW (Hz) of the printed (stable) and nominal gains of every cell, by every
         independent route (Lyapunov, quadrature, impulse sum, eq 8 as printed, the closed
         forms: eq 14, eq 13 reconstructed and as printed, eqs 11-12)."""
+        return _shared(("routes", self._cells_key), self._routes).copy()
+
+    def _routes(self) -> pd.DataFrame:
         rows = []
         for c in self.cells:
             sets = {"printed": (c["alpha_h"], c["beta_h"], c["gamma_h"])}
@@ -238,7 +262,10 @@ class HuangStudy(Study):
         def designed(bn, rule):
             # designed gains carry the BLAS kernel's last bits (their ENBW is solved through
             # a Lyapunov equation): snapped, the simulated tracks are the same on any machine
-            return Gains(*(float(snap(v)) for v in huang_for_enbw(bn, self.dt, rule, 3)))
+            return _shared(
+                ("designed", float(bn), self.dt, rule),
+                lambda: Gains(*(float(snap(v)) for v in huang_for_enbw(bn, self.dt, rule, 3))),
+            )
 
         out = {
             f"ab_t2_{f5:g}_printed": self.printed_gains(f"t2.ab.{f5:g}hz"),
@@ -283,8 +310,8 @@ class HuangStudy(Study):
                     "alpha": a,
                     "beta": b,
                     "gamma_h": gh,
-                    "enbw_hz": float(enbw(g, self.dt)),
-                    "pole_radius": float(pole_radius(g)),
+                    "enbw_hz": _shared(("enbw", g, self.dt), lambda g=g: float(enbw(g, self.dt))),
+                    "pole_radius": _shared(("pole_radius", g), lambda g=g: float(pole_radius(g))),
                     **m,
                 }
             )
