@@ -77,7 +77,8 @@ def jobs_done(log: str) -> int:
 
 def rule_times(workdir: Path) -> list[dict]:
     """Seconds per rule of a build, from its ``benchmarks/results/**.tsv`` files (a rule's
-    files lie under ``benchmarks/results/<stage>/``; the file's stem names the job)."""
+    files lie under ``benchmarks/results/<stage>/``; the file's stem names the job) and, for
+    the benchmark cells, from their logs."""
     per: dict[str, list[float]] = defaultdict(list)
     for f in sorted((workdir / "benchmarks" / "results").rglob("*.tsv")):
         rows = list(csv.DictReader(f.open(encoding="utf-8"), delimiter="\t"))
@@ -91,6 +92,12 @@ def rule_times(workdir: Path) -> list[dict]:
             else f"{stage}/{re.sub(r'_?fig[1-6]$', '', f.stem)}"
         )
         per[name].append(float(rows[-1]["s"]))
+    # the benchmark cells have no benchmark: file (see abglib.bench.cell.cell_job): their
+    # logs end with "wrote <csv> in <seconds> s"
+    for f in sorted((workdir / "logs" / "benchmark" / "cells").rglob("*.log")):
+        m = re.search(r" in ([0-9.]+) s$", f.read_text(encoding="utf-8").strip())
+        if m:
+            per["benchmark_cell"].append(float(m.group(1)))
     out = [
         {"rule": k, "jobs": len(v), "total_s": round(sum(v), 2), "max_s": round(max(v), 2)}
         for k, v in per.items()

@@ -9,6 +9,7 @@ on a cluster.
 
 from __future__ import annotations
 
+import time
 from collections.abc import Mapping
 
 __all__ = ["cell_job"]
@@ -43,6 +44,7 @@ def cell_job(
     from .benchmark import cell_dataset, check_cell, run_cell
     from .metrics import fail_threshold
 
+    started = time.perf_counter()
     with job_log(log, f"benchmark cell {variant}/{scenario}") as logger:
         ds = cell_dataset(parquet, scenario, scenario_spec, settings.get("runs"), seed)
         logger.info("%s on %s: %d runs x %d samples", variant, ds.name, ds.runs, ds.n_samples)
@@ -61,4 +63,7 @@ def cell_job(
         logger.info("VRF build check: |t| <= %.3f", threshold)
         check_cell(cell, threshold)
         write_csv(cell, out_csv, digits)
-        logger.info("wrote %s", out_csv)
+        # the cell's own time (the rule has no benchmark: file, whose per-second sampling of
+        # Snakemake's whole process tree cost more than a small cell; benchmarks/rebuild.py
+        # reads this line)
+        logger.info("wrote %s in %.3f s", out_csv, time.perf_counter() - started)

@@ -19,8 +19,6 @@ rule benchmark_cell:
         cell="results/benchmark/cells/{variant}/{scenario}.csv",
     log:
         "logs/benchmark/cells/{variant}/{scenario}.log",
-    benchmark:
-        "benchmarks/results/benchmark/cells/{variant}/{scenario}.tsv"
     wildcard_constraints:
         variant="|".join(map(re.escape, BENCH_VARIANTS)) or "no-variants-configured",
         scenario="|".join(map(re.escape, BENCH_SCENARIOS)) or "no-scenarios-configured",
