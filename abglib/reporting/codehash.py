@@ -113,24 +113,18 @@ def _save_disk_cache() -> None:
         pass  # a cache: never worth failing a build for
 
 
-def _module_file(package_dir: Path, name: str, files=None) -> Path | None:
+def _module_file(package_dir: Path, name: str, files: set) -> Path | None:
     """The file of module ``name`` (dotted, starting with the package's name), or None.
 
     ``files``: the package's Python files by their path relative to ``package_dir``
-    (:func:`_package_files`), to look them up instead of asking the file system."""
+    (:func:`_package_files`), looked up instead of asking the file system."""
     parts = name.split(".")
     if parts[0] != package_dir.name:
         return None
     rels = [(*parts[1:], "__init__.py")]
     if len(parts) > 1:
         rels.append((*parts[1:-1], parts[-1] + ".py"))
-    for rel in rels:
-        if files is not None:
-            if rel in files:
-                return package_dir.joinpath(*rel)
-        elif package_dir.joinpath(*rel).is_file():
-            return package_dir.joinpath(*rel)
-    return None
+    return next((package_dir.joinpath(*rel) for rel in rels if rel in files), None)
 
 
 def _package_files(package_dir: Path) -> set[tuple[str, ...]]:
