@@ -46,8 +46,8 @@ PRELOAD = [
     "matplotlib",
     "matplotlib.pyplot",
     "numba",
-    # multiprocessing runs the main script again in every worker (the fork server's
-    # "__main__" preload does not take: it looks for a key the preparation data lacks,
+    # multiprocessing runs the main script again in every worker (a "__main__" preload
+    # would not stop it: the fork server looks for a key its preparation data lacks,
     # CPython 3.11), and Snakemake's main script imports snakemake.cli: ~1 s a job unless
     # the server has it already
     "snakemake.cli",
@@ -91,9 +91,7 @@ def _context():
         if _CONTEXT is None:
             os.environ.setdefault("MPLBACKEND", "Agg")
             ctx = multiprocessing.get_context("forkserver")
-            # "__main__": the server loads the main script once (where multiprocessing
-            # honours it), so that a worker need not run it again
-            ctx.set_forkserver_preload(["__main__", *PRELOAD])
+            ctx.set_forkserver_preload(PRELOAD)
             _CONTEXT = ctx
     return _CONTEXT
 
