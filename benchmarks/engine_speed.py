@@ -130,6 +130,19 @@ def _rel_diff(a, b):
     return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
 
 
+def _whole_case_row(case, filt, label, samples, secs) -> dict:
+    """A row timed on the whole case (abglib's rows and the numpy floor; nothing to diff)."""
+    return dict(
+        case=case,
+        filter=filt,
+        implementation=label,
+        samples=samples,
+        peer_samples=samples,
+        seconds=secs,
+        max_rel_diff=0.0,
+    )
+
+
 def run(quick: bool = False, repeats: int = 5) -> pd.DataFrame:
     rng = np.random.default_rng(SEED)
     runs, n_batch = (10**3, 10**3) if quick else (10**4, 10**3)
@@ -151,29 +164,9 @@ def run(quick: bool = False, repeats: int = 5) -> pd.DataFrame:
                 res = track(z, gains, dt=DT, outputs=outputs)  # touch the memory once
                 kw = {"out": res} if reuse else {}
                 secs, out = _time(lambda: track(z, gains, dt=DT, outputs=outputs, **kw), repeats)  # noqa: B023
-                rows.append(
-                    dict(
-                        case=case,
-                        filter=filt,
-                        implementation=label,
-                        samples=z.size,
-                        peer_samples=z.size,
-                        seconds=secs,
-                        max_rel_diff=0.0,
-                    )
-                )
+                rows.append(_whole_case_row(case, filt, label, z.size, secs))
             secs, _ = _time(lambda: _fresh_fill(z.shape), repeats)  # noqa: B023
-            rows.append(
-                dict(
-                    case=case,
-                    filter=filt,
-                    implementation=FRESH_FLOOR,
-                    samples=z.size,
-                    peer_samples=z.size,
-                    seconds=secs,
-                    max_rel_diff=0.0,
-                )
-            )
+            rows.append(_whole_case_row(case, filt, FRESH_FLOOR, z.size, secs))
             # peers on a subset: the first series (or rows) summing to peer_samples
             flat = z.reshape(-1, z.shape[-1])
             per_row = flat.shape[1]
