@@ -25,8 +25,9 @@ def ctrl():
     return design_controller(NOMINAL, DT, 100.0, 1.0)
 
 
-@pytest.mark.parametrize(("mode", "order", "omega"), [("known", None, 0.5), ("predicted", 2, 0.3),
-                                                       ("predicted", 5, 0.8)])
+@pytest.mark.parametrize(
+    ("mode", "order", "omega"), [("known", None, 0.5), ("predicted", 2, 0.3), ("predicted", 5, 0.8)]
+)
 def test_steady_state_amplitude_equals_simulation(ctrl, mode, order, omega):
     """Frequency-response amplitudes (Figs I.8-I.9) against a long time simulation: the
     simulated maximum after the transient approaches the amplitude from below."""
@@ -43,8 +44,17 @@ def test_steady_state_amplitude_equals_simulation(ctrl, mode, order, omega):
 def test_kalman_run_exact_model_keeps_antenna_estimate(ctrl):
     """With the exact antenna model and w = 0, the object estimate is all the filter does:
     the run is bounded and the estimation error of the position stays small."""
-    r = simulate(NOMINAL, ctrl, amplitude=10.0, omega=0.1, n_steps=600, mode="kalman", order=5,
-                 v_w=5e-10, v_v=VV)
+    r = simulate(
+        NOMINAL,
+        ctrl,
+        amplitude=10.0,
+        omega=0.1,
+        n_steps=600,
+        mode="kalman",
+        order=5,
+        v_w=5e-10,
+        v_v=VV,
+    )
     assert np.abs(r["e"][200:]).max() < 1.0
     assert np.abs(r["xt_err"][0, 200:]).max() < 0.5
 
@@ -65,12 +75,22 @@ def test_robustness_radius_and_simulation_agree(ctrl):
     """App. H: nominal radius 1 (marginal, unexcited); a p_a design error of -10 % gives a
     radius > 1 and a diverging simulation."""
     assert spectral_radius(NOMINAL, "p_a", 1.0, DT, 100.0, 1.0, 5, 5e-10, VV) == pytest.approx(
-        1.0, abs=1e-7)
+        1.0, abs=1e-7
+    )
     rad = spectral_radius(NOMINAL, "p_a", 0.9, DT, 100.0, 1.0, 5, 5e-10, VV)
     assert rad > 1.1
     bad = design_controller(NOMINAL.scaled("p_a", 0.9), DT, 100.0, 1.0)
-    r = simulate(NOMINAL, bad, amplitude=10.0, omega=0.1, n_steps=300, mode="kalman", order=5,
-                 v_w=5e-10, v_v=VV)
+    r = simulate(
+        NOMINAL,
+        bad,
+        amplitude=10.0,
+        omega=0.1,
+        n_steps=300,
+        mode="kalman",
+        order=5,
+        v_w=5e-10,
+        v_v=VV,
+    )
     assert np.abs(r["e"][-20:]).max() > 100.0
     big = closed_loop_matrix(NOMINAL, ctrl, 5, 5e-10, VV)
     assert big.shape == (6 + 6 + 6, 6 + 6 + 6)

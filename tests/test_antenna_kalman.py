@@ -50,12 +50,15 @@ def test_gain_identities(setup):
     s = em.M @ kg.Q @ em.M.T + VV
     # eq 7.19 in the source's form, A Q [I + M^T Vv^-1 M Q]^-1 M^T Vv^-1
     vinv = np.linalg.inv(VV)
-    k_src = em.A @ kg.Q @ np.linalg.solve(np.eye(len(kg.Q)) + em.M.T @ vinv @ em.M @ kg.Q,
-                                          em.M.T @ vinv)
+    k_src = (
+        em.A
+        @ kg.Q
+        @ np.linalg.solve(np.eye(len(kg.Q)) + em.M.T @ vinv @ em.M @ kg.Q, em.M.T @ vinv)
+    )
     np.testing.assert_allclose(kg.Kf, k_src, atol=1e-9 * max(1.0, np.abs(kg.Kf).max()))
     np.testing.assert_allclose(kg.Kf, -em.A @ kg.Q @ kg.Cf, atol=1e-12)  # eq 7.20
     np.testing.assert_allclose(kg.Af, em.A - kg.Kf @ em.M, atol=1e-14)
-    assert np.abs(np.linalg.eigvals(kg.Af[em.n_antenna:, em.n_antenna:])).max() < 1.0
+    assert np.abs(np.linalg.eigvals(kg.Af[em.n_antenna :, em.n_antenna :])).max() < 1.0
     assert s.shape == (2, 2)
 
 
@@ -70,8 +73,9 @@ def test_enbw_by_impulse_response(setup):
     for _ in range(20000):
         h.append((ct @ x)[0, 0])
         x = f @ x
-    assert kalman_object_enbw(kg, em, DT) == pytest.approx(np.sum(np.square(h)) / (2 * DT),
-                                                           rel=1e-9)
+    assert kalman_object_enbw(kg, em, DT) == pytest.approx(
+        np.sum(np.square(h)) / (2 * DT), rel=1e-9
+    )
 
 
 def test_kalman_errors():

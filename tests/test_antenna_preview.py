@@ -43,8 +43,9 @@ def test_taylor_model_is_the_taylor_polynomial(order):
     k = np.arange(0, 200)
     model = np.array([(ct @ np.linalg.matrix_power(at, int(kk)) @ x0)[0] for kk in k])
     h = k * dt
-    closed = sum(math.sin(i0 * dt + j * math.pi / 2) * h**j / math.factorial(j)
-                 for j in range(order + 1))
+    closed = sum(
+        math.sin(i0 * dt + j * math.pi / 2) * h**j / math.factorial(j) for j in range(order + 1)
+    )
     np.testing.assert_allclose(model, closed, atol=1e-12)
     np.testing.assert_allclose(taylor_predict(x0, order, dt, k), closed, atol=1e-13)
     err = np.abs(closed - np.sin((i0 + k) * dt))

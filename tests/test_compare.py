@@ -3,13 +3,17 @@
 import numpy as np
 import pandas as pd
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from abglib import AbglibValueError
 from abglib.reporting.compare import (
     COMPARISON_COLUMNS,
     Alternative,
     build_comparison,
+    csv_text,
     format_number,
+    format_table,
     read_published,
     scorecard,
     tolerance_from_printed,
@@ -264,3 +268,63 @@ def test_read_table_reads_bounds_as_zero(tmp_path):
     write_csv(with_precision(df, d="<1e-12"), tmp_path / "t.csv")
     back = read_table(tmp_path / "t.csv")
     assert back["d"].tolist() == [0.25, 0.0] and back["name"].tolist() == ["a", "b"]
+
+
+def _pandas_route(df, digits=10, precision=None):
+    return format_table(df, digits, precision).to_csv(index=False, lineterminator="\n")
+
+
+def test_csv_text_writes_what_pandas_writes_for_every_dtype():
+    """The fast route of write_csv against format_table + to_csv, column kind by kind:
+    floats (NaN, -0, round-off bounds), objects (None, bools, text, numbers), ints, bools,
+    strings with NA, text needing quotes, and the dtypes that take pandas' route."""
+    df = pd.DataFrame(
+        {
+            "x": [1.0, np.nan, -0.0, 1.23456789012345e-13],
+            "obj": [None, True, "a,b", 2.5],
+            "i": np.array([1, -2, 3, 40], dtype=np.int64),
+            "b": [True, False, True, False],
+            "s": pd.array(["p", None, 'q"uote', "line\nbreak"], dtype="str"),
+            "rel": [1e-15, 2e-3, np.nan, -3e-13],
+            "": [0.5, 0.25, 0.125, 1.0],
+        }
+    )
+    df = with_precision(df, rel="<1e-12:3", x=4)
+    assert csv_text(df) == _pandas_route(df)
+    assert "<1e-12" in csv_text(df)
+    for other in (
+        pd.array([1, None, 3, 4], dtype="Int64"),
+        pd.Categorical(["a", "b", "a", "c"]),
+        pd.array([True, None, False, True], dtype="boolean"),
+        pd.date_range("2020-01-01", periods=4),
+    ):
+        t = df.assign(other=other)
+        assert csv_text(t) == _pandas_route(t)
+    empty = df.iloc[:0]
+    assert csv_text(empty) == _pandas_route(empty)
+    assert csv_text(pd.DataFrame()) == _pandas_route(pd.DataFrame())
+    two = pd.DataFrame([[1.5, 2.5]], columns=pd.MultiIndex.from_tuples([("a", "b"), ("a", "c")]))
+    assert csv_text(two) == _pandas_route(two)
+
+
+@given(
+    st.lists(
+        st.tuples(
+            st.floats(allow_nan=True, allow_infinity=False, width=64),
+            st.one_of(st.none(), st.text(max_size=4), st.floats(allow_infinity=False)),
+            st.integers(-(2**62), 2**62),
+        ),
+        min_size=1,
+        max_size=6,
+    ),
+    st.integers(1, 17),
+)
+@settings(max_examples=60, deadline=None)
+def test_csv_text_matches_pandas_on_random_tables(rows, digits):
+    df = pd.DataFrame(rows, columns=["f", "o", "i"])
+    assert csv_text(df, digits) == _pandas_route(df, digits)
+
+
+def test_csv_text_names_a_precision_for_a_missing_column():
+    with pytest.raises(AbglibValueError, match="lacks"):
+        csv_text(with_precision(pd.DataFrame({"a": [1.0]}), b=3).drop(columns="a").assign(c=1.0))

@@ -43,8 +43,10 @@ def _steelman():
 
     cfg = CONFIG["steelman1978"]
     for name, fig in cfg["figures"].items():
-        yield f"steelman1978/{name}", draw(response_table(fig, cfg["grids"]), fig["axes"],
-                                           fig["caption"])
+        yield (
+            f"steelman1978/{name}",
+            draw(response_table(fig, cfg["grids"]), fig["axes"], fig["caption"]),
+        )
 
 
 def _huang_track(metrics):
@@ -61,8 +63,9 @@ def _huang():
     from abglib.replications.huang.figures import huang_figures
     from abglib.reporting.compare import read_published
 
-    tables = {n: _table("huang", n) for n in ("bandwidth_curves", "tables12", "thermal",
-                                               "track_metrics")}
+    tables = {
+        n: _table("huang", n) for n in ("bandwidth_curves", "tables12", "thermal", "track_metrics")
+    }
     tables["track"] = _huang_track(tables["track_metrics"])
     published = read_published(sorted((REPO / "data" / "published" / "huang").glob("*.csv")))
     for name, fig in huang_figures(tables, published, CONFIG["huang"]).items():
@@ -75,10 +78,17 @@ def _alwagih_tracks():
     for noise in ("white", "coloured"):
         for coord, speed in (("X", 200.0), ("Y", 90.0)):
             truth = speed * t + 0.5 * t**2
-            d = {"noise": noise, "experiment": 1, "coord": coord, "t": t, "truth": truth,
-                 "measured": truth + RNG.normal(0, 10, t.size)}
-            for k, m in enumerate(("M1", "M2", "M3", "M4", "M5", "M5_causal", "kalata_ab",
-                                   "kalman_ss")):
+            d = {
+                "noise": noise,
+                "experiment": 1,
+                "coord": coord,
+                "t": t,
+                "truth": truth,
+                "measured": truth + RNG.normal(0, 10, t.size),
+            }
+            for k, m in enumerate(
+                ("M1", "M2", "M3", "M4", "M5", "M5_causal", "kalata_ab", "kalman_ss")
+            ):
                 d[m] = truth + RNG.normal(0, 3 + k, t.size)
             rows.append(pd.DataFrame(d))
     return pd.concat(rows, ignore_index=True)
@@ -94,21 +104,34 @@ def _alwagih():
 
     tracks = _alwagih_tracks()
     for noise in ("white", "coloured"):
-        yield f"alwagih/tracks_{noise}", alwagih_tracks(
-            tracks[tracks["noise"] == noise], PAPER_METHODS, f"Figure 5, {noise} noise")
+        yield (
+            f"alwagih/tracks_{noise}",
+            alwagih_tracks(
+                tracks[tracks["noise"] == noise], PAPER_METHODS, f"Figure 5, {noise} noise"
+            ),
+        )
     mc = _table("alwagih", "mc_rmse")
     for noise, table in (("white", "table1"), ("coloured", "table2")):
-        yield f"alwagih/rmse_{noise}", alwagih_rmse_bars(
-            mc[mc["noise"] == noise], _table("alwagih", table), PAPER_METHODS,
-            f"Figure 7: RMSE of the 5 methods, {noise} noise")
+        yield (
+            f"alwagih/rmse_{noise}",
+            alwagih_rmse_bars(
+                mc[mc["noise"] == noise],
+                _table("alwagih", table),
+                PAPER_METHODS,
+                f"Figure 7: RMSE of the 5 methods, {noise} noise",
+            ),
+        )
     yield "alwagih/causal", alwagih_causal(_table("alwagih", "causal"), "causal M5")
 
 
 def _faa_bendix():
     from abglib.replications.faa_bendix.figures import draw_all
 
-    figs = draw_all(_table("faa_bendix", "responses"), _table("faa_bendix", "damping_lags"),
-                    _table("faa_bendix", "captions"))
+    figs = draw_all(
+        _table("faa_bendix", "responses"),
+        _table("faa_bendix", "damping_lags"),
+        _table("faa_bendix", "captions"),
+    )
     for name, fig in figs.items():
         yield f"faa_bendix/{name}", fig
 
@@ -116,24 +139,43 @@ def _faa_bendix():
 def _antenna_tables():
     t = np.linspace(0.0, 300.0, 301)
     tracking = pd.concat(
-        [pd.DataFrame({"case": c, "t": t, "z": 10 * np.sin(0.1 * t), "y": 0.0,
-                       "e": k * 0.01 * np.sin(0.1 * t) - 0.4 * np.exp(-t), "u": 0.0})
-         for k, c in enumerate(["known", "order 1", "order 2", "order 3"])],
+        [
+            pd.DataFrame(
+                {
+                    "case": c,
+                    "t": t,
+                    "z": 10 * np.sin(0.1 * t),
+                    "y": 0.0,
+                    "e": k * 0.01 * np.sin(0.1 * t) - 0.4 * np.exp(-t),
+                    "u": 0.0,
+                }
+            )
+            for k, c in enumerate(["known", "order 1", "order 2", "order 3"])
+        ],
         ignore_index=True,
     )
     tracking["e"] = tracking["e"].astype(object)
     tracking.loc[0, "e"] = "<1e-10"  # a bound, as the study writes it
     runs = []
-    for fig, cases in (("I.10-I.13", ["model emphasis, V_w = 5e-12", "optimal, V_w = 5e-10"]),
-                       ("I.17-I.19", ["amplitude 10", "amplitude 100"])):
+    for fig, cases in (
+        ("I.10-I.13", ["model emphasis, V_w = 5e-12", "optimal, V_w = 5e-10"]),
+        ("I.17-I.19", ["amplitude 10", "amplitude 100"]),
+    ):
         for c in cases:
-            d = {"figure": fig, "case": c, "t": t, "e": RNG.normal(0, 0.1, t.size),
-                 "u": RNG.normal(0, 1, t.size)}
+            d = {
+                "figure": fig,
+                "case": c,
+                "t": t,
+                "e": RNG.normal(0, 0.1, t.size),
+                "u": RNG.normal(0, 1, t.size),
+            }
             for k in range(6):
                 d[f"est_err_d{k}"] = RNG.normal(0, 0.05, t.size)
             runs.append(pd.DataFrame(d))
-    tables = {n: _table("antenna", n) for n in ("taylor", "omega_sweep", "kalman_sweep",
-                                                 "design_errors", "abg")}
+    tables = {
+        n: _table("antenna", n)
+        for n in ("taylor", "omega_sweep", "kalman_sweep", "design_errors", "abg")
+    }
     tables.update(tracking=tracking, kalman_runs=pd.concat(runs, ignore_index=True))
     return tables
 
@@ -153,13 +195,22 @@ def _benchmark():
     for metric in ("rmse_x_pred", "rmse_x_smooth"):
         yield f"benchmark/heatmap_{metric}", benchmark_heatmap(league, metric)
     curves, points = _table("benchmark", "tradeoff_curves"), _table("benchmark", "tradeoff")
-    for scen in (CONFIG["benchmark"]["tradeoff_scenarios"], ["bench_ca"],
-                 ["bench_ca", "bench_turn"]):
+    for scen in (
+        CONFIG["benchmark"]["tradeoff_scenarios"],
+        ["bench_ca"],
+        ["bench_ca", "bench_turn"],
+    ):
         yield f"benchmark/tradeoff_{len(scen)}", tradeoff_figure(curves, points, scen)
 
 
-DOCS = {"steelman1978": _steelman, "huang": _huang, "alwagih": _alwagih,
-        "faa_bendix": _faa_bendix, "antenna": _antenna, "benchmark": _benchmark}
+DOCS = {
+    "steelman1978": _steelman,
+    "huang": _huang,
+    "alwagih": _alwagih,
+    "faa_bendix": _faa_bendix,
+    "antenna": _antenna,
+    "benchmark": _benchmark,
+}
 
 
 @pytest.mark.parametrize("doc", list(DOCS))
@@ -172,9 +223,11 @@ def test_every_figure_has_alt_text_and_no_legend_or_label_over_data(doc, tmp_pat
         if len(alt) < 80 or "nan" in alt.lower().split():
             problems.append(f"{name}: alt text too thin: {alt!r}")
         fig.canvas.draw()
-        for what, found in (("legend over data", legend_overlaps(fig, redraw=False)),
-                            ("labels over each other", text_overlaps(fig, redraw=False)),
-                            ("cut off at the edge", cut_off(fig, redraw=False))):
+        for what, found in (
+            ("legend over data", legend_overlaps(fig, redraw=False)),
+            ("labels over each other", text_overlaps(fig, redraw=False)),
+            ("cut off at the edge", cut_off(fig, redraw=False)),
+        ):
             if found:
                 problems.append(f"{name}: {what}: {found[:3]}")
         png = tmp_path / (name.replace("/", "_") + ".png")

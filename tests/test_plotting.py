@@ -119,8 +119,9 @@ def test_overlapping_labels_and_a_legend_wider_than_the_figure_are_found():
         ax.plot([0, 1], [0, 1])
         ax.annotate("std_ab_a0.3", (0.5, 0.5))
         ax.annotate("std_abg_a0.3", (0.52, 0.51))
-        legend_outside(fig, [plt.Line2D([], [])] * 3, ["a very long legend entry"] * 3,
-                       side="bottom", ncol=3)
+        legend_outside(
+            fig, [plt.Line2D([], [])] * 3, ["a very long legend entry"] * 3, side="bottom", ncol=3
+        )
         return fig
 
     fig = fig_()
@@ -133,10 +134,14 @@ def test_overlapping_labels_and_a_legend_wider_than_the_figure_are_found():
 @pytest.mark.parametrize(
     "names, family",
     [
-        (["standard (critically damped) α-β-γ", "std_abg_a0.3", "X̄/X, standard α-β-γ, α=0.3"],
-         "standard α-β-γ"),
-        (["standard (critically damped) α-β", "std_ab_a0.3", "critically damped α-β"],
-         "standard α-β"),
+        (
+            ["standard (critically damped) α-β-γ", "std_abg_a0.3", "X̄/X, standard α-β-γ, α=0.3"],
+            "standard α-β-γ",
+        ),
+        (
+            ["standard (critically damped) α-β", "std_ab_a0.3", "critically damped α-β"],
+            "standard α-β",
+        ),
         (["QD α-β-γ", "qd_m21"], "QD α-β-γ"),
         (["M1", "bb_a0.5", "Benedict-Bordner α-β", "alwagih_M1"], "Benedict-Bordner α-β"),
         (["M2", "growing_memory", "alwagih_M2"], "growing memory α-β"),

@@ -351,5 +351,3 @@ def steady_state_lag(gains: Gains, dt=1.0, kind="acceleration", magnitude=1.0, o
             grow = np.where(m == 0.0, 0.0, np.copysign(np.inf, m))
             lag = np.where(g == 0.0, np.where(factor == 0.0, 0.0, grow), factor * m * T**3 / g)
     return scalar_or_array(np.asarray(lag, dtype=float))
-
-

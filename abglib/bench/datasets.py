@@ -566,14 +566,12 @@ def read(parquet_path, manifest_path=None) -> Dataset:
         ) from None
     if manifest.get("parquet_sha256") not in (None, _sha256(parquet_path)):
         raise AbglibValueError(
-            f"{parquet_path} does not match its manifest {manifest_path} (sha256 differs)"
-            + rebuild
+            f"{parquet_path} does not match its manifest {manifest_path} (sha256 differs)" + rebuild
         )
     table = pq.read_table(parquet_path)
     if table.column_names != expected:
         raise AbglibValueError(
-            f"{parquet_path} has columns {table.column_names}, manifest says {expected}"
-            + rebuild
+            f"{parquet_path} has columns {table.column_names}, manifest says {expected}" + rebuild
         )
     runs, n = int(manifest["runs"]), int(manifest["n_samples"])
     coords = tuple(manifest["coords"])

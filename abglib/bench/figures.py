@@ -64,8 +64,7 @@ def benchmark_heatmap(league: pd.DataFrame, metric: str = "rmse_x_smooth", title
             text = "div" if div.iat[i, j] else ("n/a" if not np.isfinite(v) else f"{v:.2g}")
             # white text on the dark end of the colour map, black elsewhere
             dark = np.isfinite(v) and im.norm(v) > 0.55
-            ax.text(j, i, text, ha="center", va="center", fontsize=7,
-                    color="w" if dark else "k")
+            ax.text(j, i, text, ha="center", va="center", fontsize=7, color="w" if dark else "k")
     ax.set_xticks(range(piv.shape[1]), piv.columns, rotation=35, ha="right")
     ax.set_yticks(range(piv.shape[0]), piv.index)
     ax.set_xlabel("scenario")
@@ -115,8 +114,9 @@ def tradeoff_figure(curves: pd.DataFrame, points: pd.DataFrame, scenarios, title
     cols = 1 if n == 1 else 2
     rows = int(np.ceil(n / cols))
     spare = rows * cols > n
-    fig, axes = plt.subplots(rows, cols, figsize=(WIDTH, 3.3 * rows + 0.9 + 1.2 * (not spare)),
-                             squeeze=False)
+    fig, axes = plt.subplots(
+        rows, cols, figsize=(WIDTH, 3.3 * rows + 0.9 + 1.2 * (not spare)), squeeze=False
+    )
     alt = []
     for ax, sc in zip(axes.ravel(), scenarios, strict=False):
         d = curves[curves["scenario"] == sc]
@@ -124,22 +124,38 @@ def tradeoff_figure(curves: pd.DataFrame, points: pd.DataFrame, scenarios, title
             e = d[d["family"] == f].sort_values("value")
             if e.empty:
                 continue
-            ax.plot(e["noise_rms"], e["lag_rms"].clip(lower=1e-3), ".-", ms=3,
-                    color=family_colour(f), label=f)
+            ax.plot(
+                e["noise_rms"],
+                e["lag_rms"].clip(lower=1e-3),
+                ".-",
+                ms=3,
+                color=family_colour(f),
+                label=f,
+            )
         p = points[points["scenario"] == sc]
         for r in p.itertuples():
-            ax.plot(r.noise_rms, max(r.lag_rms, 1e-3), marker[r.variant], ms=6,
-                    mfc=family_colour(r.variant), mec="k", mew=0.6, ls="none",
-                    label=r.variant)
+            ax.plot(
+                r.noise_rms,
+                max(r.lag_rms, 1e-3),
+                marker[r.variant],
+                ms=6,
+                mfc=family_colour(r.variant),
+                mec="k",
+                mew=0.6,
+                ls="none",
+                label=r.variant,
+            )
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_title(sc, loc="left")
         if len(p):
             b = p.loc[p["rmse"].idxmin()]
-            alt.append(f"{sc}: configured variants from noise {p['noise_rms'].min():.3g} to "
-                       f"{p['noise_rms'].max():.3g} m and lag {p['lag_rms'].min():.3g} to "
-                       f"{p['lag_rms'].max():.3g} m, lowest RMSE {b['variant']} "
-                       f"({b['rmse']:.3g} m)")
+            alt.append(
+                f"{sc}: configured variants from noise {p['noise_rms'].min():.3g} to "
+                f"{p['noise_rms'].max():.3g} m and lag {p['lag_rms'].min():.3g} to "
+                f"{p['lag_rms'].max():.3g} m, lowest RMSE {b['variant']} "
+                f"({b['rmse']:.3g} m)"
+            )
     for ax in axes[:, 0]:
         ax.set_ylabel("RMS lag part of x̄ error (m)")
     for ax in axes[-1]:
@@ -156,16 +172,24 @@ def tradeoff_figure(curves: pd.DataFrame, points: pd.DataFrame, scenarios, title
     var_labels = [x for x in handles if x not in fams]
     labels = fam_labels + var_labels
     hs = [handles[k] for k in labels]
-    for ax in axes.ravel()[len(scenarios):]:
+    for ax in axes.ravel()[len(scenarios) :]:
         ax.axis("off")
     if spare:  # the legend in the free panel, which holds no data
         free = axes.ravel()[-1]
-        free.legend(hs, labels, loc="center", ncol=2, fontsize=7,
-                    title="design families (curves) and configured variants (markers)")
+        free.legend(
+            hs,
+            labels,
+            loc="center",
+            ncol=2,
+            fontsize=7,
+            title="design families (curves) and configured variants (markers)",
+        )
     else:
         legend_outside(fig, hs, labels, side="bottom", ncol=3, fontsize=7)
-    suptitle(fig, title or "Noise versus lag of x̄ per design family (each swept over its "
-             "design parameter)")
+    suptitle(
+        fig,
+        title or "Noise versus lag of x̄ per design family (each swept over its design parameter)",
+    )
     describe(
         fig,
         f"Log-log noise versus lag (RMS, m) of the smoothed position, one panel per scenario "

@@ -22,9 +22,7 @@ def _ranked(league: pd.DataFrame) -> pd.DataFrame:
     return league[~diverged]
 
 
-def leaders(
-    league: pd.DataFrame, metric: str, exclude: Iterable[str] = ()
-) -> pd.DataFrame:
+def leaders(league: pd.DataFrame, metric: str, exclude: Iterable[str] = ()) -> pd.DataFrame:
     """Per scenario: the leader, the best variant of another family, and the margin.
 
     Parameters

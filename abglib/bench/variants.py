@@ -496,8 +496,7 @@ def _load_callable(target, name: str) -> Callable:
                 loader_spec.loader.exec_module(module)
             except Exception as exc:
                 raise AbglibValueError(
-                    f"variant {name!r}: importing {str(path)!r} failed: "
-                    f"{type(exc).__name__}: {exc}"
+                    f"variant {name!r}: importing {str(path)!r} failed: {type(exc).__name__}: {exc}"
                 ) from exc
             sys.modules.setdefault(mod_name, module)
             _LOADED[key] = module
@@ -511,9 +510,7 @@ def _load_callable(target, name: str) -> Callable:
             ) from None
     fn = getattr(module, func, None)
     if not callable(fn):
-        known = sorted(
-            k for k, v in vars(module).items() if callable(v) and not k.startswith("_")
-        )
+        known = sorted(k for k, v in vars(module).items() if callable(v) and not k.startswith("_"))
         raise AbglibValueError(
             f"variant {name!r}: callable {target!r}: {where!r} has no function {func!r}; "
             f"it defines: {', '.join(known) or '(no public functions)'}"

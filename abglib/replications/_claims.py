@@ -533,7 +533,6 @@ def _describe_flip(rng: PlausibleRange, by_value) -> str:
     for v, a, b in runs:
         span = _fmt(a) if _same(a, b) else f"{_fmt(a)}-{_fmt(b)}"
         parts.append(f"{v} at {span}")
-    return (
-        f"{rng.name} (plausible {rng.describe()}, nominal {_fmt(rng.nominal)}): "
-        + ", ".join(parts)
+    return f"{rng.name} (plausible {rng.describe()}, nominal {_fmt(rng.nominal)}): " + ", ".join(
+        parts
     )

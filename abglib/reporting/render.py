@@ -191,9 +191,7 @@ def _execute_in_kernel(nb, cwd, timeout) -> None:
                 km.shutdown_kernel(now=False)
 
 
-def report_context(
-    doc, version, input, output, *, repo, nav, made_by, provenance, settings=None
-):
+def report_context(doc, version, input, output, *, repo, nav, made_by, provenance, settings=None):
     """The notebook's parameters and the page's arguments of one report rule.
 
     ``input`` has ``notebook``, ``figures`` and ``tables`` (what upstream rules wrote);

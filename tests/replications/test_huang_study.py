@@ -74,9 +74,7 @@ def test_enbw_routes_on_the_printed_tables(row):
     assert huang.enbw_eq8_two_sided(gains, T) == pytest.approx(2 * exact, rel=1e-8)
 
 
-@pytest.mark.parametrize(
-    "row", [STABLE[3], STABLE[-1]], ids=["type2-ab-2Hz", "type2-abg-20Hz"]
-)
+@pytest.mark.parametrize("row", [STABLE[3], STABLE[-1]], ids=["type2-ab-2Hz", "type2-abg-20Hz"])
 def test_enbw_monte_carlo(row):
     """A noise-driven loop: the output variance over 2T is the ENBW (4 standard errors)."""
     gains = from_huang(*row[3:])

@@ -55,8 +55,7 @@ def alwagih_tracks(tracks: pd.DataFrame, methods=("M1", "M2", "M3", "M4", "M5"),
     x = tracks[tracks["coord"] == "X"].sort_values("t")
     y = tracks[tracks["coord"] == "Y"].sort_values("t")
     ax.plot(x["truth"], y["truth"], color=REFERENCE["truth"], lw=2.0, label="actual")
-    ax.plot(x["measured"], y["measured"], ".", color=REFERENCE["measured"], ms=3,
-            label="measured")
+    ax.plot(x["measured"], y["measured"], ".", color=REFERENCE["measured"], ms=3, label="measured")
     for m in methods:
         col, ls = _style(m)
         ax.plot(x[m], y[m], color=col, ls=ls, label=f"{_NAMES.get(m, m)} predicted")
@@ -104,10 +103,24 @@ def alwagih_rmse_bars(summary: pd.DataFrame, realisation: pd.DataFrame, methods,
             pos = np.arange(len(exps)) + (j - (len(methods) - 1) / 2) * width
             col, _ = _style(m)
             err = np.vstack([d["mean"] - d["ci_low"], d["ci_high"] - d["mean"]])
-            ax.bar(pos, d["mean"], width, color=col, yerr=err, capsize=1.5,
-                   error_kw={"lw": 0.8}, label=_NAMES.get(m, m))
-            ax.plot(pos, r.loc[exps, m], ".", color=REFERENCE["truth"], ms=3.5,
-                    label="one realisation (the paper's table)" if j == 0 else None)
+            ax.bar(
+                pos,
+                d["mean"],
+                width,
+                color=col,
+                yerr=err,
+                capsize=1.5,
+                error_kw={"lw": 0.8},
+                label=_NAMES.get(m, m),
+            )
+            ax.plot(
+                pos,
+                r.loc[exps, m],
+                ".",
+                color=REFERENCE["truth"],
+                ms=3.5,
+                label="one realisation (the paper's table)" if j == 0 else None,
+            )
         ax.set_xticks(np.arange(len(exps)), [str(e) for e in exps])
         ax.set_xlabel("experiment")
         ax.set_ylabel(f"RMSE of the {c} prediction (m)")
@@ -144,8 +157,16 @@ def alwagih_causal(causal: pd.DataFrame, title=""):
         width = 0.8 / len(cols)
         for j, col in enumerate(cols):
             pos = np.arange(len(d)) + (j - (len(cols) - 1) / 2) * width
-            ax.bar(pos, d[col], width, color=_style(col)[0], label=_NAMES.get(col, col),
-                   hatch="///" if col == "M5_causal" else None, edgecolor="white", lw=0)
+            ax.bar(
+                pos,
+                d[col],
+                width,
+                color=_style(col)[0],
+                label=_NAMES.get(col, col),
+                hatch="///" if col == "M5_causal" else None,
+                edgecolor="white",
+                lw=0,
+            )
         ax.set_xticks(np.arange(len(d)), labels)
         ax.set_xlabel("experiment and coordinate")
         ax.set_yscale("log")

@@ -49,7 +49,9 @@ def _antenna_taylor(t):
     colours = _order_colours([f"order {c[5:]}" for c in cols])
     fig, ax = _grid(
         "Replicates Fig. I.4: Taylor prediction of z = sin(i/100) from i = 50 (Δt = 0.01)",
-        1, 1, 4.2,
+        1,
+        1,
+        4.2,
     )
     ax = ax[0, 0]
     ax.plot(t["i"], t["z"], color=REFERENCE["truth"], lw=2.0, label="real position")
@@ -81,22 +83,25 @@ def _antenna_tracking(t):
     fig, axes = _grid(
         "Replicates Figs I.5-I.7: tracking error e = y − z, z = 10 sin(0.1 t), Q/R = 100, "
         f"known output and orders of prediction ({_ANTENNA_NOTE})",
-        rows, 2, 1.55 * rows + 1.0, sharex=True, sharey=True,
+        rows,
+        2,
+        1.55 * rows + 1.0,
+        sharex=True,
+        sharey=True,
     )
     colours = _order_colours(cases)
     tail = []
     for ax, case in zip(axes.flat, cases, strict=False):
         d = t[t["case"] == case]
         ax.plot(d["t"], d["e"], lw=0.9, color=colours[case])
-        ax.set_title(case if case != "known" else "known desired output (Fig. I.5)",
-                     loc="left")
+        ax.set_title(case if case != "known" else "known desired output (Fig. I.5)", loc="left")
         late = d[d["t"] >= d["t"].max() / 2]
         tail.append(f"{case} {late['e'].abs().max():.2g}")
     for ax in axes[:, 0]:
         ax.set_ylabel("e (-)")
     for ax in axes[-1]:
         ax.set_xlabel("dimensionless time t")
-    for ax in axes.flat[len(cases):]:
+    for ax in axes.flat[len(cases) :]:
         ax.set_visible(False)
     describe(
         fig,
@@ -114,7 +119,10 @@ def _antenna_omega_sweep(t):
     fig, axes = _grid(
         "Replicates Figs I.8 (Q/R = 100) and I.9 (Q/R = 10⁴): steady-state maximum tracking "
         f"error and control against ω, amplitude 1 ({_ANTENNA_NOTE})",
-        len(qrs), 2, 2.6 * len(qrs) + 1.2, sharex=True,
+        len(qrs),
+        2,
+        2.6 * len(qrs) + 1.2,
+        sharex=True,
     )
     colours = _order_colours(list(dict.fromkeys(t["case"])))
     for row, qr in enumerate(qrs):
@@ -130,8 +138,7 @@ def _antenna_omega_sweep(t):
         axes[row, 1].set_ylabel("max |u| (-)")
     for ax in axes[-1]:
         ax.set_xlabel("frequency ratio ω")
-    legend_outside(fig, *axes[0, 0].get_legend_handles_labels(), side="bottom",
-                   ncol=len(colours))
+    legend_outside(fig, *axes[0, 0].get_legend_handles_labels(), side="bottom", ncol=len(colours))
     at1 = t[t["omega"] == t["omega"].max()]
     describe(
         fig,
@@ -157,7 +164,11 @@ def _antenna_kalman_vw(t):
         "Replicates Figs I.10-I.13: fifth-order model, normal track, three V_w settings; rows: "
         "estimation errors of position, speed, acceleration and the tracking error "
         f"({_ANTENNA_NOTE})",
-        4, len(cases), 7.6, sharex=True, sharey="row",
+        4,
+        len(cases),
+        7.6,
+        sharex=True,
+        sharey="row",
     )
     rms = []
     for j, case in enumerate(cases):
@@ -167,8 +178,10 @@ def _antenna_kalman_vw(t):
             axes[i, j].plot(c["t"], c[col], lw=0.6, color=family_colour("Kalman"))
             if j == 0:
                 axes[i, j].set_ylabel(f"error of {sym} (-)" if col != "e" else "e (-)")
-        rms.append(f"{case}: RMS position error {np.sqrt(np.mean(c['est_err_d0'] ** 2)):.3g}, "
-                   f"RMS tracking error {np.sqrt(np.mean(c['e'] ** 2)):.3g}")
+        rms.append(
+            f"{case}: RMS position error {np.sqrt(np.mean(c['est_err_d0'] ** 2)):.3g}, "
+            f"RMS tracking error {np.sqrt(np.mean(c['e'] ** 2)):.3g}"
+        )
     for ax in axes[-1]:
         ax.set_xlabel("t (in units of 1/ω₀)")
     describe(
@@ -185,7 +198,10 @@ def _antenna_kalman_sweep(t):
     fig, axes = _grid(
         "Replicates Figs I.14 (5th order, Q/R = 100), I.15 (5th, 10⁴), I.16 (3rd, 100): "
         f"with Kalman estimation, amplitude 10, median over object phases ({_ANTENNA_NOTE})",
-        len(figs), 2, 2.3 * len(figs) + 1.2, sharex=True,
+        len(figs),
+        2,
+        2.3 * len(figs) + 1.2,
+        sharex=True,
     )
     for row, f in enumerate(figs):
         d = t[t["figure"] == f]
@@ -220,7 +236,10 @@ def _antenna_amplitude(t):
     fig, axes = _grid(
         "Replicates Figs I.17-I.19: optimal settings (5th order, Q/R = 100), ω = 0.1, "
         f"amplitudes 10, 100, 1 ({_ANTENNA_NOTE})",
-        len(cases), 2, 1.9 * len(cases) + 1.0, sharex=True,
+        len(cases),
+        2,
+        1.9 * len(cases) + 1.0,
+        sharex=True,
     )
     col = family_colour("Kalman")
     peaks = []
@@ -248,7 +267,9 @@ def _antenna_robustness(t):
     fig, axes = _grid(
         "Replicates Figs I.20 (β_d), I.21 (β_a), I.22 (p_a) and app. H's p_f, β_f, κ: "
         f"max |e| against design value / real value, capped at 10³ ({_ANTENNA_NOTE})",
-        2, 3, 5.0,
+        2,
+        3,
+        5.0,
     )
     col = family_colour("Kalman")
     windows = []
@@ -258,21 +279,29 @@ def _antenna_robustness(t):
         ax.loglog(d["factor"], e, ".-", color=col, ms=3, label="max |e| (simulated)")
         stable = d["stable"].astype(bool)
         un = d[~stable]
-        ax.loglog(un["factor"], e[un.index].fillna(1e3), "x", color="#d62728",
-                  label="unstable (spectral radius > 1)")
+        ax.loglog(
+            un["factor"],
+            e[un.index].fillna(1e3),
+            "x",
+            color="#d62728",
+            label="unstable (spectral radius > 1)",
+        )
         ax.axvline(1.0, color=REFERENCE["zero"], lw=0.6)
         if name == "p_a":  # the stable window is narrow: zoom in (Fig. I.22)
             ax.set_xscale("linear")
             ax.set_xlim(0.95, 1.05)
         ax.set_title(name, loc="left")
         f = d["factor"][stable]
-        windows.append(f"{name} stable for factors {f.min():g} to {f.max():g}"
-                       if len(f) else f"{name} never stable")
+        windows.append(
+            f"{name} stable for factors {f.min():g} to {f.max():g}"
+            if len(f)
+            else f"{name} never stable"
+        )
     for ax in axes[:, 0]:
         ax.set_ylabel("max |e| (-)")
     for ax in axes[-1]:
         ax.set_xlabel("multiplication factor")
-    for ax in axes.flat[len(names):]:
+    for ax in axes.flat[len(names) :]:
         ax.set_visible(False)
     legend_outside(fig, *axes.flat[0].get_legend_handles_labels(), side="bottom", ncol=2)
     describe(
@@ -289,7 +318,10 @@ def _antenna_abg(t):
     fig, axes = _grid(
         "Beyond the source: critically damped α-β-γ with the ENBW of a Kalman object predictor "
         f"instead of that Kalman filter, amplitude 10, Q/R = 100 ({_ANTENNA_NOTE})",
-        1, 2, 3.9, sharex=True,
+        1,
+        2,
+        3.9,
+        sharex=True,
     )
     kal, abg = family_colour("Kalman"), family_colour("standard α-β-γ")
     curves = [

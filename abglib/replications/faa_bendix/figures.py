@@ -75,12 +75,22 @@ def response_grid(data: pd.DataFrame, kind: str, sfy: dict, title: str = ""):
         step = float(sfy[p])
         for j, out in enumerate(outs):
             ax = axes[i, j]
-            ax.plot(cap["t"], cap[out], "o-", ms=1.8, lw=1.0, color=c_cap,
-                    label="captions' two-digit gains")
-            ax.plot(memo["t"], memo[out], "--", lw=1.0, color=c_memo,
-                    label="memo's three-digit gains")
-            diff[out] = max(diff.get(out, 0.0), float(np.max(np.abs(
-                cap[out].to_numpy() - memo[out].to_numpy()))) / step)
+            ax.plot(
+                cap["t"],
+                cap[out],
+                "o-",
+                ms=1.8,
+                lw=1.0,
+                color=c_cap,
+                label="captions' two-digit gains",
+            )
+            ax.plot(
+                memo["t"], memo[out], "--", lw=1.0, color=c_memo, label="memo's three-digit gains"
+            )
+            diff[out] = max(
+                diff.get(out, 0.0),
+                float(np.max(np.abs(cap[out].to_numpy() - memo[out].to_numpy()))) / step,
+            )
             lo = min(cap[out].min(), memo[out].min(), 0.0)
             hi = max(cap[out].max(), memo[out].max(), 0.0)
             lo, hi = np.floor(lo / step) * step, np.ceil(hi / step) * step
@@ -104,11 +114,24 @@ def response_grid(data: pd.DataFrame, kind: str, sfy: dict, title: str = ""):
         a, b = cap["alpha"].iloc[0], cap["beta"].iloc[0]
         am, bm = memo["alpha"].iloc[0], memo["beta"].iloc[0]
         axes[i, 2].text(
-            1.04, 0.5, f"α {_g(a, 2)} | {_g(am, 3)}\nβ {_g(b, 2)} | {_g(bm, 3)}",
-            transform=axes[i, 2].transAxes, va="center", ha="left", fontsize=7,
+            1.04,
+            0.5,
+            f"α {_g(a, 2)} | {_g(am, 3)}\nβ {_g(b, 2)} | {_g(bm, 3)}",
+            transform=axes[i, 2].transAxes,
+            va="center",
+            ha="left",
+            fontsize=7,
         )
-    axes[0, 2].text(1.04, 1.0, "captions |\nmemo", transform=axes[0, 2].transAxes,
-                    va="bottom", ha="left", fontsize=7, style="italic")
+    axes[0, 2].text(
+        1.04,
+        1.0,
+        "captions |\nmemo",
+        transform=axes[0, 2].transAxes,
+        va="bottom",
+        ha="left",
+        fontsize=7,
+        style="italic",
+    )
     if title:
         suptitle(fig, title)
     legend_outside(fig, *axes[0, 0].get_legend_handles_labels(), side="bottom", ncol=2)
@@ -146,28 +169,45 @@ def stability_triangle(table: pd.DataFrame, title: str = ""):
     """
     a = np.linspace(0.0, 1.0, 401)
     a2 = np.linspace(0.0, 1.999, 801)
-    crit, bb, bendix = (family_colour(f) for f in ("standard α-β", "Benedict-Bordner α-β",
-                                                  "Bendix α-β"))
+    crit, bb, bendix = (
+        family_colour(f) for f in ("standard α-β", "Benedict-Bordner α-β", "Bendix α-β")
+    )
     fig, (ax, axz) = plt.subplots(1, 2, figsize=(WIDTH, 4.4))
     for axis, zoom in ((ax, False), (axz, True)):
-        axis.plot([0, 2, 0, 0], [0, 0, 4, 0], "-", color=REFERENCE["truth"], lw=1.0,
-                  label="stability triangle")
-        axis.fill_between(
-            a, 2 - a - 2 * np.sqrt(1 - a), 2 - a + 2 * np.sqrt(1 - a), color=crit,
-            alpha=0.12, lw=0, label="complex poles (underdamped)",
+        axis.plot(
+            [0, 2, 0, 0],
+            [0, 0, 4, 0],
+            "-",
+            color=REFERENCE["truth"],
+            lw=1.0,
+            label="stability triangle",
         )
-        axis.plot(a, 2 - a - 2 * np.sqrt(1 - a), "-", color=crit,
-                  label="critically damped α-β")
+        axis.fill_between(
+            a,
+            2 - a - 2 * np.sqrt(1 - a),
+            2 - a + 2 * np.sqrt(1 - a),
+            color=crit,
+            alpha=0.12,
+            lw=0,
+            label="complex poles (underdamped)",
+        )
+        axis.plot(a, 2 - a - 2 * np.sqrt(1 - a), "-", color=crit, label="critically damped α-β")
         axis.plot(a, 2 - a + 2 * np.sqrt(1 - a), ":", color=crit, lw=1.0)
         axis.plot(a2, a2**2 / (2 - a2), "--", color=bb, label="Benedict–Bordner")
-        axis.plot(table["alpha"], table["beta"], "o", color=bendix, ms=4,
-                  label="Bendix gain sets (memo)")
+        axis.plot(
+            table["alpha"], table["beta"], "o", color=bendix, ms=4, label="Bendix gain sets (memo)"
+        )
         axis.set_xlabel("α")
         axis.set_ylabel("β")
         if zoom:
             for r in table.itertuples(index=False):
-                axis.annotate(f"{r.period_s:g} s", (r.alpha, r.beta),
-                              textcoords="offset points", xytext=(5, -3), fontsize=7)
+                axis.annotate(
+                    f"{r.period_s:g} s",
+                    (r.alpha, r.beta),
+                    textcoords="offset points",
+                    xytext=(5, -3),
+                    fontsize=7,
+                )
             axis.set_xlim(0.2, 0.72)
             axis.set_ylim(0.0, 1.0)
             axis.set_title("detail, with the update periods", loc="left")

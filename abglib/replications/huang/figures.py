@@ -78,35 +78,62 @@ def huang_bandwidth_figure(
         closed = "eq 14" if order == 2 else "eqs 8–13 (reconstructed)"
         ax.semilogy(c["xi"], c["bnT_exact"], "-", color=color, label=f"{name}: exact (Lyapunov)")
         ax.semilogy(
-            c["xi"].iloc[::6], c["bnT_closed"].iloc[::6], "o", ms=3.5, mfc="none",
-            color=color, label=f"{name}: {closed}",
+            c["xi"].iloc[::6],
+            c["bnT_closed"].iloc[::6],
+            "o",
+            ms=3.5,
+            mfc="none",
+            color=color,
+            label=f"{name}: {closed}",
         )
         if order == 3:
             ax.semilogy(
-                c["xi"], c["bnT_eq13_printed"], "--", lw=0.9, color=color, alpha=0.7,
+                c["xi"],
+                c["bnT_eq13_printed"],
+                "--",
+                lw=0.9,
+                color=color,
+                alpha=0.7,
                 label="α-β-γ: eq 13 read literally",
             )
         m = mk[mk["order"] == order]
         fin = m[np.isfinite(m["enbw_exact"])]
         ax.semilogy(
-            fin["xi_printed"], fin["enbw_exact"] * dt, "s", color=color, ms=6,
+            fin["xi_printed"],
+            fin["enbw_exact"] * dt,
+            "s",
+            color=color,
+            ms=6,
             label=f"{name}: Table gains (printed ξ, true B_n·T)",
         )
         uns = m[~np.isfinite(m["enbw_exact"])]
         if len(uns):
             ax.semilogy(
-                uns["xi_printed"], uns["bn_nominal_hz"] * dt, "v", color=color, ms=7,
+                uns["xi_printed"],
+                uns["bn_nominal_hz"] * dt,
+                "v",
+                color=color,
+                ms=7,
                 label=f"{name}: Table gains, unstable (printed ξ, nominal B_n·T)",
             )
             unstable_all += [f"{name} at printed ξ = {x:g}" for x in uns["xi_printed"]]
         ax.semilogy(
-            m["xi_nominal"], m["bn_nominal_hz"] * dt, "x", color=REFERENCE["truth"], ms=7,
+            m["xi_nominal"],
+            m["bn_nominal_hz"] * dt,
+            "x",
+            color=REFERENCE["truth"],
+            ms=7,
             label="ξ that gives the nominal ENBW" if order == 2 else None,
         )
     nominal = sorted(set(mk["bn_nominal_hz"]))
     for i, bn in enumerate(nominal):
-        ax.axhline(bn * dt, color=REFERENCE["level"], lw=0.6, ls=":",
-                   label="nominal ENBWs of the table" if i == 0 else None)
+        ax.axhline(
+            bn * dt,
+            color=REFERENCE["level"],
+            lw=0.6,
+            ls=":",
+            label="nominal ENBWs of the table" if i == 0 else None,
+        )
     ax.set_xlabel("ξ (smoothing factor)")
     ax.set_ylabel("B_n·T (one-sided ENBW × sample interval)")
     ax.set_xlim(0, 1)
@@ -151,10 +178,20 @@ def huang_thermal_figure(thermal: pd.DataFrame, budget_m: float, limits: dict, t
         ``{label: ENBW in Hz}`` vertical lines (the paper's 40 Hz, the computed limits).
     """
     fig, ax = plt.subplots(figsize=(WIDTH, 5.6))
-    ax.loglog(thermal["enbw_hz"], thermal["sigma_printed_m"], "-", color="C0",
-              label="printed formula τc / (2k √((S/N)₀ F_r / B_n))")
-    ax.loglog(thermal["enbw_hz"], thermal["sigma_barton_m"], "--", color="C3",
-              label="Barton's 2E/N₀ form (= printed formula at the two-sided ENBW)")
+    ax.loglog(
+        thermal["enbw_hz"],
+        thermal["sigma_printed_m"],
+        "-",
+        color="C0",
+        label="printed formula τc / (2k √((S/N)₀ F_r / B_n))",
+    )
+    ax.loglog(
+        thermal["enbw_hz"],
+        thermal["sigma_barton_m"],
+        "--",
+        color="C3",
+        label="Barton's 2E/N₀ form (= printed formula at the two-sided ENBW)",
+    )
     ax.axhline(budget_m, color=REFERENCE["level"], lw=0.8, ls=":", label=f"σ = {budget_m:g} m")
     styles = [("k", "-."), ("C0", (0, (1, 1.5))), ("C3", (0, (4, 1.5)))]
     for i, (label, bn) in enumerate(limits.items()):
@@ -202,8 +239,13 @@ def huang_track_figure(track: pd.DataFrame, panels: list, title: str = "", noisy
         axes = sub.subplots(1, ncols, sharex=True, squeeze=False)[0]
         for j, (y, label) in enumerate(refs[0] if refs else []):
             for ax in axes:
-                ax.axhline(y, color=REFERENCE["level"], lw=0.9, ls=("--", ":")[j % 2],
-                           label=label if ax is axes[0] else None)
+                ax.axhline(
+                    y,
+                    color=REFERENCE["level"],
+                    lw=0.9,
+                    ls=("--", ":")[j % 2],
+                    label=label if ax is axes[0] else None,
+                )
         parts = []
         if noisy:  # all the noise first, the noise-free curves over it
             for name, _ in names:
@@ -216,9 +258,11 @@ def huang_track_figure(track: pd.DataFrame, panels: list, title: str = "", noisy
             if noisy:
                 err = track[f"err_{name}"].to_numpy()
                 axes[1].plot(t, lag, color=col, lw=1.4)
-                parts.append(f"{label}: noise-free error from {lag.min():.3g} to "
-                             f"{lag.max():.3g} m, ending at {lag[-1]:.3g} m; with noise "
-                             f"RMS {np.sqrt(np.mean(err**2)):.3g} m")
+                parts.append(
+                    f"{label}: noise-free error from {lag.min():.3g} to "
+                    f"{lag.max():.3g} m, ending at {lag[-1]:.3g} m; with noise "
+                    f"RMS {np.sqrt(np.mean(err**2)):.3g} m"
+                )
             else:
                 parts.append(f"{label}: error from {lag.min():.3g} to {lag.max():.3g} m")
         for ax in axes:
@@ -238,7 +282,9 @@ def huang_track_figure(track: pd.DataFrame, panels: list, title: str = "", noisy
         f"{title}. {len(panels)} rows of range error R − R_p (m) against time "
         f"(0 to {t[-1]:g} s), noise-free on the left"
         + (", with thermal noise on the right" if noisy else "")
-        + ". " + ". ".join(alt) + ".",
+        + ". "
+        + ". ".join(alt)
+        + ".",
     )
     return fig
 
