@@ -24,6 +24,13 @@ rule all:
         bench_targets(),
 
 
+onstart:
+    # a local build with jobs to run (never a dry run or a no-op): the warm worker starts
+    # its imports now, while the in-process jobs and the scheduler get going
+    if jobs_run_here():
+        warm_up()
+
+
 onsuccess:
     if Path(f"{REPORTS}/index.html").exists():
         print(

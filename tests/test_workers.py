@@ -101,3 +101,23 @@ def test_in_place_runs_here_and_gives_stderr_back(script, tmp_path, monkeypatch)
 def test_a_missing_script_is_named(tmp_path):
     with pytest.raises(JobFailed, match="no workflow script .*nope.py"):
         run_script(tmp_path / "nope.py", _job(tmp_path, "a"))
+
+
+def test_warm_up_starts_the_fork_server_and_jobs_still_run(tmp_path):
+    """warm_up (the workflow's onstart) starts the server at once, without waiting for
+    its imports; jobs run through it afterwards as before."""
+    import json
+    from multiprocessing import forkserver
+
+    from abglib.reporting.workers import warm_up
+
+    warm_up()
+    pid = forkserver._forkserver._forkserver_pid
+    assert pid is not None
+    os.kill(pid, 0)  # alive
+    warm_up()  # idempotent: the same server
+    assert forkserver._forkserver._forkserver_pid == pid
+    script = tmp_path / "job.py"
+    script.write_text(SCRIPT)
+    run_script(script, _job(tmp_path, "w1"))
+    assert json.loads((tmp_path / "w1.json").read_text())["pid"] != os.getpid()

@@ -7,7 +7,7 @@ from pathlib import Path
 import abglib
 from abglib.reporting.codehash import code_hash
 from abglib.reporting.pipeline import config_errors, prepend_pythonpath
-from abglib.reporting.workers import run_script as run_in_worker, script_object
+from abglib.reporting.workers import run_script as run_in_worker, script_object, warm_up
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
@@ -90,6 +90,14 @@ def script_params(script, *sources, extra=()):
         "script": f"workflow/scripts/{script}",
         "code": code_of(script, *sources, extra=extra),
     }
+
+
+def jobs_run_here():
+    """Whether this Snakemake process runs the jobs itself (a local build), so that their
+    scripts go to the warm worker; a cluster's jobs run in processes of their own."""
+    return workflow.local_exec and not (
+        workflow.remote_exec or workflow.subprocess_exec
+    )
 
 
 def run_script(input, output, params, wildcards, threads, resources, log, rulename):
