@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import _buffers
 from ._checks import AbglibValueError, as_float_array, check_positive, describe
 from .gains import Gains, require_gains
 
@@ -230,7 +231,10 @@ def track(
         buffer are allocated. Reusing buffers across calls saves fresh memory pages
         (the main cost of a large batched call); a non-contiguous buffer works but costs
         a copy. The returned arrays are these buffers. If ``track`` raises, a buffer's
-        contents are unspecified.
+        contents are unspecified. Without ``out``, large outputs (>= 4 MB) reuse the
+        memory of earlier outputs that are gone (no array or view of them left), so a
+        loop that drops each result before the next call pays no fresh pages either
+        (:mod:`abglib._buffers`; at most 1 GiB is kept, ``ABGLIB_POOL_BYTES`` sets it).
 
     Returns
     -------
@@ -359,7 +363,8 @@ def track(
             # an alpha-beta tracker's acceleration stays exactly zero
             buffers[name] = _zeros(full)
         else:
-            buffers[name] = np.empty(full)
+            # recycled memory of earlier outputs when large (abglib._buffers)
+            buffers[name] = _buffers.empty(full)
     if order == 2 and "a_smooth" in user:
         user["a_smooth"][...] = 0.0
 
@@ -382,7 +387,9 @@ def _zeros(shape) -> np.ndarray:
     size = math.prod(shape) * 8
     if size < _LAZY_ZEROS_BYTES:
         return np.zeros(shape)
-    return np.frombuffer(mmap.mmap(-1, size), dtype=np.float64).reshape(shape)
+    # private: a forked child's writes must not reach the parent's array
+    block = mmap.mmap(-1, size, flags=mmap.MAP_PRIVATE | mmap.MAP_ANONYMOUS)
+    return np.frombuffer(block, dtype=np.float64).reshape(shape)
 
 
 # --------------------------------------------------------------------------- drivers

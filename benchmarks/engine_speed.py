@@ -14,16 +14,19 @@ abglib rows, each a call of ``abglib.track`` over the whole case:
 * ``4 outputs, out= buffers``: all of x_pred, x_smooth, v_smooth, a_smooth written into
   caller-owned arrays reused from call to call (``track(..., out=previous_result)``), the
   way a Monte Carlo loop would call it;
-* ``4 outputs, fresh arrays``: the same with new arrays every call, which pays the
-  kernel's zeroing of fresh memory pages (320 MB a call in the batch case);
+* ``4 outputs, fresh arrays``: the same without ``out=``, each call returning new arrays
+  while the previous call's result is still held (the timing loop's variable), as a
+  Monte Carlo loop ``r = track(...)`` does. From the third call on, abglib recycles the
+  memory of results that are gone (:mod:`abglib._buffers`), so these calls too skip the
+  operating system's fresh pages (320 MB a call in the batch case);
 * ``x_smooth only``: ``outputs=("x_smooth",)``, fresh.
 
-A reference row, ``numpy, 4 fresh arrays: np.empty + fill``, times numpy alone allocating
-four new arrays of the case's shape and filling each (``np.empty(shape).fill(0.0)``,
-one thread): no tracking at all, only what the operating system charges for fresh pages
-(faulting and zeroing 320 MB a call in the batch case). A fresh-array row of abglib
-cannot be much faster than this floor on one core; the batched kernel first-touches its
-outputs from all of numba's threads, so it can beat it only by spreading those faults.
+Two reference rows show what fresh pages cost without recycling (neither is a target
+row): ``abglib.track, new arrays, recycling off`` (the pool switched off,
+``ABGLIB_POOL_BYTES=0``: every call faults and zeroes its outputs' pages), and ``numpy,
+4 fresh arrays: np.empty + fill``, numpy alone allocating four new arrays of the case's
+shape and filling each (``np.empty(shape).fill(0.0)``, one thread): no tracking at all,
+only what the operating system charges for fresh pages.
 
 Peers, on the same data and converted gains (:mod:`abglib.conventions`):
 
@@ -62,7 +65,7 @@ import pandas as pd
 from filterpy.gh import GHFilter, GHKFilter
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # this checkout's abglib
-from abglib import Gains, track  # noqa: E402
+from abglib import Gains, _buffers, track  # noqa: E402
 from abglib.conventions import to_filterpy  # noqa: E402
 
 TARGET_RATE = 2e8  # sample-updates/s, batched, all four outputs (issue 14)
@@ -105,6 +108,7 @@ def filterpy_run(z, gains: Gains, dt: float):
 
 
 FRESH_FLOOR = "numpy, 4 fresh arrays: np.empty + fill"
+NO_RECYCLING = "abglib.track, new arrays, recycling off"
 
 
 def _fresh_fill(shape):
@@ -165,6 +169,14 @@ def run(quick: bool = False, repeats: int = 5) -> pd.DataFrame:
                 kw = {"out": res} if reuse else {}
                 secs, out = _time(lambda: track(z, gains, dt=DT, outputs=outputs, **kw), repeats)  # noqa: B023
                 rows.append(_whole_case_row(case, filt, label, z.size, secs))
+            limit = _buffers.pool_limit()
+            _buffers.set_pool_limit(0)
+            try:
+                track(z, gains, dt=DT)
+                secs, _ = _time(lambda: track(z, gains, dt=DT), repeats)  # noqa: B023
+            finally:
+                _buffers.set_pool_limit(limit)
+            rows.append(_whole_case_row(case, filt, NO_RECYCLING, z.size, secs))
             secs, _ = _time(lambda: _fresh_fill(z.shape), repeats)  # noqa: B023
             rows.append(_whole_case_row(case, filt, FRESH_FLOOR, z.size, secs))
             # peers on a subset: the first series (or rows) summing to peer_samples
