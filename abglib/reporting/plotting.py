@@ -21,7 +21,6 @@ reads it back with the standard library only.
 from __future__ import annotations
 
 import functools
-import io
 import re
 from collections.abc import Iterable
 
@@ -412,7 +411,14 @@ def save_figure(fig, path, alt: str | None = None, *, dpi: int = DPI) -> None:
     reduced to a 256-colour palette without dithering (a line figure has few colours:
     the PNG is about three times smaller and looks the same). Raises ``ValueError`` if
     there is no alt text.
+
+    The figure is drawn once, on an Agg canvas at ``dpi``, and its pixels go straight to
+    Pillow: ``fig.savefig`` would draw it twice (a layout pass, then the drawing: with
+    constrained layout every tick and label is laid out in both) and encode a PNG that
+    is decoded again here. The pixels are the same (the canvas's draw runs the layout
+    engine, then draws).
     """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
     from PIL import Image, PngImagePlugin
 
     from .pipeline import atomic_output
@@ -427,10 +433,14 @@ def save_figure(fig, path, alt: str | None = None, *, dpi: int = DPI) -> None:
             )
         if not isinstance(dpi, int | float) or not 20 <= dpi <= 600:
             raise ValueError(f"dpi must be a number in [20, 600], got {dpi!r}")
-        buf = io.BytesIO()
-        fig.savefig(buf, dpi=dpi, format="png", metadata={"Software": None})
-        buf.seek(0)
-        img = Image.open(buf).convert("RGB")
+        canvas = fig.canvas if isinstance(fig.canvas, FigureCanvasAgg) else FigureCanvasAgg(fig)
+        old_dpi = fig.dpi
+        fig.dpi = dpi
+        try:
+            canvas.draw()
+            img = Image.fromarray(np.asarray(canvas.buffer_rgba())).convert("RGB")
+        finally:
+            fig.dpi = old_dpi
         img = img.quantize(colors=256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
         info = PngImagePlugin.PngInfo()
         info.add_text("Description", alt)  # Pillow writes iTXt if not Latin-1
