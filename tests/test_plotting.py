@@ -81,6 +81,65 @@ def test_png_is_deterministic_and_a_palette_image(tmp_path):
         assert im.size == (round(P.WIDTH * P.DPI), round(4.4 * P.DPI))
 
 
+@styled
+def _loglog_figure():
+    fig, axes = plt.subplots(1, 2, sharey=True)
+    x = np.logspace(-2, 1, 40)
+    axes[0].loglog(x, x**2, ".-", label="x²")
+    axes[1].loglog(x, 1 + 0 * x, label="1")  # less than a decade: minor labels, no major
+    axes[1].set_ylim(0.5, 2.0)
+    return describe(fig, "two log-log panels")
+
+
+def _savefig_pixels(fig, dpi):
+    """matplotlib's own savefig of ``fig``, reduced to the palette as save_figure does."""
+    import io
+
+    from PIL import Image
+
+    buf = io.BytesIO()
+    fig.savefig(buf, dpi=dpi, format="png")
+    buf.seek(0)
+    img = Image.open(buf).convert("RGB")
+    img = img.quantize(colors=256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+    return np.asarray(img.convert("RGB"))
+
+
+@pytest.mark.parametrize("make", [_line_figure, _loglog_figure])
+@pytest.mark.parametrize("dpi", [100, 72])
+def test_save_figure_draws_the_pixels_of_matplotlibs_savefig(tmp_path, make, dpi):
+    from PIL import Image
+
+    save_figure(make(), tmp_path / "f.png", alt="x", dpi=dpi)
+    got = np.asarray(Image.open(tmp_path / "f.png").convert("RGB"))
+    ref = _savefig_pixels(make(), dpi)
+    assert got.shape == ref.shape == (int(4.4 * dpi), int(P.WIDTH * dpi), 3)  # truncated
+    assert np.array_equal(got, ref)
+
+
+def test_log_axes_make_ticks_only_inside_their_view(tmp_path):
+    ref = _loglog_figure()
+    ref.canvas.draw()
+    fig = _loglog_figure()
+    save_figure(fig, tmp_path / "f.png")
+    for ax, ax_ref in zip(fig.axes, ref.axes, strict=True):
+        for axis, axis_ref in ((ax.xaxis, ax_ref.xaxis), (ax.yaxis, ax_ref.yaxis)):
+            lo, hi = sorted(axis.get_view_interval())
+            for which in ("major", "minor"):
+                locs = axis.get_ticklocs(minor=which == "minor")
+                assert np.all((locs >= lo * (1 - 1e-9)) & (locs <= hi * (1 + 1e-9)))
+                full = axis_ref.get_ticklocs(minor=which == "minor")
+                inside = full[(full >= lo * (1 - 1e-9)) & (full <= hi * (1 + 1e-9))]
+                np.testing.assert_array_equal(locs, inside)
+    # the default locators return ticks beyond the view; the trimmed axis made fewer
+    assert len(ref.axes[0].xaxis.minorTicks) > len(fig.axes[0].xaxis.minorTicks) > 0
+    assert [t.get_text() for t in fig.axes[1].yaxis.get_ticklabels(minor=True)] == [
+        t.get_text() for t in ref.axes[1].yaxis.get_ticklabels(minor=True)
+        if 0.5 <= t.get_position()[1] <= 2.0
+    ]
+    plt.close(ref)
+
+
 def test_png_description_of_a_png_without_one_and_of_a_non_png(tmp_path):
     from PIL import Image
 

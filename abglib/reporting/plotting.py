@@ -21,7 +21,6 @@ reads it back with the standard library only.
 from __future__ import annotations
 
 import functools
-import io
 import re
 from collections.abc import Iterable
 
@@ -33,6 +32,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 from matplotlib.colors import to_rgb  # noqa: E402
+from matplotlib.ticker import Locator, LogLocator  # noqa: E402
 from matplotlib.transforms import Bbox  # noqa: E402
 
 from .pngmeta import png_description  # noqa: E402  (re-exported)
@@ -403,6 +403,56 @@ def description(fig) -> str:
     return getattr(fig, "_abglib_alt", "")
 
 
+class _InView(Locator):
+    """A log axis's tick locator that keeps only the ticks inside the view.
+
+    matplotlib's :class:`~matplotlib.ticker.LogLocator` returns the ticks of a decade or
+    more beyond each end of the view; the axis makes a tick (two lines, a grid line and
+    two labels) for each of them and lays all of them out several times a draw
+    (constrained layout, label and title placement), then draws only those inside. A
+    log axis's labels are formatted one tick at a time, so dropping the ticks outside
+    changes no pixel; it halves the ticks a log panel makes and updates.
+    """
+
+    def __init__(self, base: LogLocator):
+        self.base = base
+
+    def set_axis(self, axis):
+        super().set_axis(axis)
+        self.base.set_axis(axis)
+
+    def __call__(self):
+        locs = np.asarray(self.base())
+        if locs.size == 0:
+            return locs
+        scale = self.axis.get_transform()
+        lo, hi = sorted(scale.transform(np.asarray(self.axis.get_view_interval(), float)))
+        t = scale.transform(locs)
+        eps = 1e-10 * (hi - lo)  # the axis's own test of a tick being in view
+        return locs[(t >= lo - eps) & (t <= hi + eps)]
+
+    def tick_values(self, vmin, vmax):
+        return self.base.tick_values(vmin, vmax)
+
+    def nonsingular(self, v0, v1):
+        return self.base.nonsingular(v0, v1)
+
+    def view_limits(self, vmin, vmax):
+        return self.base.view_limits(vmin, vmax)
+
+
+def _log_ticks_in_view(fig) -> None:
+    """Wrap the default locators of every log axis of ``fig`` in :class:`_InView`."""
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            if axis.get_scale() != "log":
+                continue
+            if type(axis.get_major_locator()) is LogLocator:
+                axis.set_major_locator(_InView(axis.get_major_locator()))
+            if type(axis.get_minor_locator()) is LogLocator:
+                axis.set_minor_locator(_InView(axis.get_minor_locator()))
+
+
 def save_figure(fig, path, alt: str | None = None, *, dpi: int = DPI) -> None:
     """Save ``fig`` as a deterministic PNG at ``path`` (temp file, then ``os.replace``).
 
@@ -412,7 +462,16 @@ def save_figure(fig, path, alt: str | None = None, *, dpi: int = DPI) -> None:
     reduced to a 256-colour palette without dithering (a line figure has few colours:
     the PNG is about three times smaller and looks the same). Raises ``ValueError`` if
     there is no alt text.
+
+    The figure is drawn once, on an Agg canvas at ``dpi``, and its pixels go straight to
+    Pillow: ``fig.savefig`` would draw it twice (a layout pass, then the drawing: with
+    constrained layout every tick and label is laid out in both) and encode a PNG that
+    is decoded again here. The pixels are the same (the canvas's draw runs the layout
+    engine, then draws). Log axes make ticks only inside their view (:class:`_InView`,
+    same pixels). The PNG is compressed at zlib's default level 6: level 9 (Pillow's
+    ``optimize``) took seven times as long for 9 % smaller files.
     """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
     from PIL import Image, PngImagePlugin
 
     from .pipeline import atomic_output
@@ -427,15 +486,20 @@ def save_figure(fig, path, alt: str | None = None, *, dpi: int = DPI) -> None:
             )
         if not isinstance(dpi, int | float) or not 20 <= dpi <= 600:
             raise ValueError(f"dpi must be a number in [20, 600], got {dpi!r}")
-        buf = io.BytesIO()
-        fig.savefig(buf, dpi=dpi, format="png", metadata={"Software": None})
-        buf.seek(0)
-        img = Image.open(buf).convert("RGB")
+        canvas = fig.canvas if isinstance(fig.canvas, FigureCanvasAgg) else FigureCanvasAgg(fig)
+        _log_ticks_in_view(fig)
+        old_dpi = fig.dpi
+        fig.dpi = dpi
+        try:
+            canvas.draw()
+            img = Image.fromarray(np.asarray(canvas.buffer_rgba())).convert("RGB")
+        finally:
+            fig.dpi = old_dpi
         img = img.quantize(colors=256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
         info = PngImagePlugin.PngInfo()
         info.add_text("Description", alt)  # Pillow writes iTXt if not Latin-1
         with atomic_output(path) as tmp:
-            img.save(tmp, format="png", pnginfo=info, optimize=True)
+            img.save(tmp, format="png", pnginfo=info, compress_level=6)
     finally:
         plt.close(fig)
 
