@@ -117,3 +117,49 @@ def test_no_job_imports_the_hash_machinery():
         "abglib.bench.datasets",
     ]
     assert "reporting/codehash.py" not in _names(module_closure(sources, pkg), pkg)
+
+
+def test_imports_and_docstrings_are_found_in_every_kind_of_block(tmp_path):
+    """Imports inside if/else, try/except/finally, with, for/while, match cases and
+    nested classes and functions all enter the closure; nested docstrings do not enter
+    the fingerprint."""
+    pkg = tmp_path / "pkg"
+    pkg.mkdir()
+    (pkg / "__init__.py").write_text("")
+    names = ["m_if", "m_else", "m_try", "m_exc", "m_fin", "m_with", "m_for", "m_case", "m_cls"]
+    for n in names:
+        (pkg / f"{n}.py").write_text("")
+    src = '''
+if X:
+    from . import m_if
+else:
+    import pkg.m_else
+try:
+    from .m_try import a
+except ImportError:
+    from . import m_exc
+finally:
+    from . import m_fin
+with open(p) as fh:
+    from . import m_with
+for i in range(2):
+    while True:
+        from . import m_for
+match v:
+    case 1:
+        from . import m_case
+class C:
+    """Doc."""
+    def f(self):
+        """Doc."""
+        class D:
+            from . import m_cls
+'''
+    (pkg / "main.py").write_text(src)
+    got = _names(module_closure(["pkg.main"], pkg), pkg)
+    assert got == sorted(["__init__.py", "main.py", *[f"{n}.py" for n in names]])
+    other = tmp_path / "other.py"
+    other.write_text(src.replace('"""Doc."""', '"""Other words."""'))
+    assert code_fingerprint(other) == code_fingerprint(pkg / "main.py")
+    other.write_text(src.replace("range(2)", "range(3)"))
+    assert code_fingerprint(other) != code_fingerprint(pkg / "main.py")

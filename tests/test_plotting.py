@@ -134,7 +134,8 @@ def test_log_axes_make_ticks_only_inside_their_view(tmp_path):
     # the default locators return ticks beyond the view; the trimmed axis made fewer
     assert len(ref.axes[0].xaxis.minorTicks) > len(fig.axes[0].xaxis.minorTicks) > 0
     assert [t.get_text() for t in fig.axes[1].yaxis.get_ticklabels(minor=True)] == [
-        t.get_text() for t in ref.axes[1].yaxis.get_ticklabels(minor=True)
+        t.get_text()
+        for t in ref.axes[1].yaxis.get_ticklabels(minor=True)
         if 0.5 <= t.get_position()[1] <= 2.0
     ]
     plt.close(ref)
