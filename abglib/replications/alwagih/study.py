@@ -349,6 +349,14 @@ class AlwagihStudy(Study):
 
     doc = "alwagih"
 
+    def memo(self, key, compute):
+        """``compute()``, once per study under ``key`` (the claims' selections from its
+        tables: each is asked for hundreds of times)."""
+        cache = self.__dict__.setdefault("_memo", {})
+        if key not in cache:
+            cache[key] = compute()
+        return cache[key]
+
     # ------------------------------------------------------------ the reconstruction
     @cached_property
     def scenarios(self) -> dict:
