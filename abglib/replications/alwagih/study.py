@@ -219,14 +219,15 @@ def paired_ttests(rmse_wide: pd.DataFrame) -> pd.DataFrame:
     rows = []
     pairs = [(base, m) for base in BASES for m in COMPARED]
     for (noise, coord), g in rmse_wide.groupby(level=["noise", "coord"], sort=False):
+        col = {c: g[c].to_numpy() for c in (*BASES, *COMPARED)}
         # every pair's test at once, column by column (the same numbers as one call each)
         tt, pp = stats.ttest_rel(
-            np.column_stack([g[base].to_numpy() for base, _ in pairs]),
-            np.column_stack([g[m].to_numpy() for _, m in pairs]),
+            np.column_stack([col[base] for base, _ in pairs]),
+            np.column_stack([col[m] for _, m in pairs]),
             axis=0,
         )
         for (base, m), t, p in zip(pairs, tt, pp, strict=True):
-            d = (g[base] - g[m]).to_numpy()
+            d = col[base] - col[m]
             rows.append(
                 {
                     "noise": noise,
