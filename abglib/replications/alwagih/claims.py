@@ -58,11 +58,16 @@ def _f(x, d=4) -> str:
     return format_number(float(x), d)
 
 
+#: The study's tables computed from the printed numbers alone (shared between studies).
+_PRINTED_TABLES = frozenset({"printed_wide", "consistency", "printed_ttests"})
+
+
 def _row(s, table: str, noise, coord):
     """Experiments x M1-M5 of one noise and coordinate of the study's ``table`` (``mc`` or
     ``printed_wide``), selected once per study (the claims ask for them ~900 times)."""
     wide = getattr(s, table)
-    return s.memo(("row", table, noise, coord), lambda: _select_row(wide, noise, coord))
+    key = ("row", table, noise, coord)
+    return s.memo(key, lambda: _select_row(wide, noise, coord), table in _PRINTED_TABLES)
 
 
 def _select_row(wide, noise, coord):
@@ -79,7 +84,7 @@ def _lookup(s, table: str, keys: tuple, values: tuple) -> dict:
             out.setdefault(tuple(r[k] for k in keys), r)
         return out
 
-    return s.memo(("lookup", table, keys), build)[values]
+    return s.memo(("lookup", table, keys), build, table in _PRINTED_TABLES)[values]
 
 
 def _expected_positive(base: str, coord: str, method: str) -> bool:

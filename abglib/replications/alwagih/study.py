@@ -330,6 +330,11 @@ def reconstructed_scenarios(scenarios: Mapping, cfg: Mapping) -> dict:
     return out
 
 
+#: What depends on the published table only (:meth:`AlwagihStudy.memo`), for the last
+#: published table seen (``"published"``): the studies of one evaluation share it.
+_PRINTED: dict = {}
+
+
 def _key(x) -> str:
     return json.dumps(x, sort_keys=True, default=str)
 
@@ -355,10 +360,19 @@ class AlwagihStudy(Study):
 
     doc = "alwagih"
 
-    def memo(self, key, compute):
+    def memo(self, key, compute, printed: bool = False):
         """``compute()``, once per study under ``key`` (the claims' selections from its
-        tables: each is asked for hundreds of times)."""
-        cache = self.__dict__.setdefault("_memo", {})
+        tables: each is asked for hundreds of times); ``printed=True``: once for every
+        study of the same published table (what depends on the printed numbers only, the
+        same for each study :func:`abglib.replications.evaluate` makes at another input).
+        """
+        if printed:
+            if _PRINTED.get("published") is not self.published:
+                _PRINTED.clear()
+                _PRINTED["published"] = self.published
+            cache = _PRINTED
+        else:
+            cache = self.__dict__.setdefault("_memo", {})
         if key not in cache:
             cache[key] = compute()
         return cache[key]
@@ -493,23 +507,25 @@ class AlwagihStudy(Study):
         return pd.DataFrame(rows)
 
     # ------------------------------------------------------------ the printed tables
-    @cached_property
+    @property
     def t12(self) -> pd.DataFrame:
-        return printed_t12(self.published)
+        return self.memo("t12", lambda: printed_t12(self.published), printed=True)
 
-    @cached_property
+    @property
     def printed_wide(self) -> pd.DataFrame:
         """Printed Tables 1-2: index (noise, experiment, coord), columns M1-M5."""
-        return _wide(self.t12, "value")[list(PAPER_METHODS)]
+        return self.memo(
+            "printed_wide", lambda: _wide(self.t12, "value")[list(PAPER_METHODS)], printed=True
+        )
 
-    @cached_property
+    @property
     def consistency(self) -> pd.DataFrame:
-        return printed_consistency(self.t12)
+        return self.memo("consistency", lambda: printed_consistency(self.t12), printed=True)
 
-    @cached_property
+    @property
     def printed_ttests(self) -> pd.DataFrame:
         """Section 7's paired t-tests on the printed Tables 1-2 themselves."""
-        return paired_ttests(self.printed_wide)
+        return self.memo("printed_ttests", lambda: paired_ttests(self.printed_wide), printed=True)
 
     # ------------------------------------------------------------ report tables
     def tracks(self) -> pd.DataFrame:
