@@ -372,19 +372,20 @@ def _m5_run(z, alphas, b_over_t, dt, causal, memory, xp, choice):  # pragma: no 
     """
     nb, n = z.shape
     k_n = alphas.size
-    x, v, pred = np.empty(k_n), np.empty(k_n), np.empty(k_n)
-    csum = np.empty((k_n, n + 1))
+    x, v, pred, err = np.empty(k_n), np.empty(k_n), np.empty(k_n), np.empty(k_n)
+    csum = np.zeros((n + 1, k_n))  # row i: the trackers' |innovation| summed before sample i
     score = np.empty(k_n)
     for b in range(nb):
         # state after the two initialisation samples (their predictions are the samples)
         v1 = (z[b, 1] - z[b, 0]) / dt
         for q in range(k_n):
-            x[q], v[q], csum[q, 0] = z[b, 1], v1, 0.0
+            x[q], v[q] = z[b, 1], v1
         for i in range(n):
             zi = z[b, i]
             if i < 2:
                 for q in range(k_n):
                     pred[q] = zi
+                    err[q] = abs(zi - zi)
             else:
                 for q in range(k_n):
                     p = x[q] + dt * v[q]
@@ -392,21 +393,24 @@ def _m5_run(z, alphas, b_over_t, dt, causal, memory, xp, choice):  # pragma: no 
                     x[q] = p + alphas[q] * r
                     v[q] = v[q] + b_over_t[q] * r
                     pred[q] = p
-            lo = max(i - memory, 0)
-            for q in range(k_n):
-                err = abs(zi - pred[q])
-                if causal:
-                    score[q] = csum[q, i] - csum[q, lo]
-                    csum[q, i + 1] = csum[q, i] + err
-                else:
-                    score[q] = err
-            best = 0
+                    err[q] = abs(zi - p)
+            if causal:
+                lo = max(i - memory, 0)
+                for q in range(k_n):
+                    score[q] = csum[i, q] - csum[lo, q]
+                    csum[i + 1, q] = csum[i, q] + err[q]
+            else:
+                for q in range(k_n):
+                    score[q] = err[q]
+            # numpy's argmin: the first minimum, or the first NaN if there is one
+            best, low = 0, score[0]
+            for q in range(1, k_n):
+                if score[q] < low:
+                    best, low = q, score[q]
             for q in range(k_n):
                 if np.isnan(score[q]):
                     best = q
                     break
-                if score[q] < score[best]:
-                    best = q
             choice[b, i] = best
             xp[b, i] = pred[best]
 
