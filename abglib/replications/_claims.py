@@ -253,8 +253,13 @@ class Study:
 
     def printed(self, key: str) -> str:
         """The printed string of one published key."""
-        pub = self.published.set_index("key")["published"]
-        if key not in pub.index:
+        # claims ask for thousands of keys: index the published table once per study
+        pub = self.__dict__.get("_printed_by_key")
+        if pub is None:
+            pub = self.__dict__["_printed_by_key"] = dict(
+                zip(self.published["key"], self.published["published"], strict=True)
+            )
+        if key not in pub:
             raise AbglibValueError(f"{self.doc}: no published key {key!r}")
         return pub[key]
 

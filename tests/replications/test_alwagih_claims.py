@@ -14,6 +14,7 @@ from decimal import Decimal
 from types import SimpleNamespace
 
 import numpy as np
+import pandas as pd
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
@@ -527,3 +528,28 @@ def test_printed_suggested_better(study, key):
     assert CLAIMS.compute(study, key).value == all(ok) is False
     # in Y, M3 and M4 are worse than M2 on average in the paper's own tables
     assert ok.count(False) == 2
+
+
+def test_study_means_are_the_pivots_of_the_long_table_bit_for_bit(study):
+    """mc, real, mean_rmse and the M5 bank means come from the cached RMSE arrays by
+    pandas' grouped mean; they are exactly the pivots of the long RMSE table."""
+    from pandas.testing import assert_frame_equal, assert_series_equal
+
+    from abglib.replications.alwagih.study import PAPER_METHODS, _wide
+
+    cols = list(PAPER_METHODS)
+    assert_frame_equal(
+        study.mc, _wide(study.paper_rmse, "rmse", aggfunc="mean")[cols], check_exact=True
+    )
+    one = study.paper_rmse[study.paper_rmse["run"] == int(study.cfg["realisation"])]
+    assert_frame_equal(study.real, _wide(one, "rmse")[cols], check_exact=True)
+    cfg = dict(study.cfg, m1_alpha=0.05, m4=dict(study.cfg["m4"], window=3))
+    table = pd.concat([study.rmse(m, cfg) for m in PAPER_METHODS], ignore_index=True)
+    want = table.groupby(["noise", "coord", "method"], sort=False)["rmse"].mean()
+    assert_series_equal(study.mean_rmse(cfg), want, check_exact=True)
+    for k in study.cfg["m5_bank_sizes"]:
+        c = dict(study.cfg, m5=dict(study.cfg["m5"], alphas=dict(study.cfg["m5"]["alphas"], n=k)))
+        g = study.rmse("M5", c).groupby(["noise", "coord"], sort=False)["rmse"].mean()
+        got = study.m5_bank[study.m5_bank["K"] == k]
+        assert list(zip(got["noise"], got["coord"], strict=True)) == list(g.index)
+        np.testing.assert_array_equal(got["M5"].to_numpy(), g.to_numpy())

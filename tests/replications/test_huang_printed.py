@@ -223,3 +223,22 @@ def test_huang_jerk_lag_is_twice_the_truth_in_his_convention():
     assert steady_state_lag_huang(gh, B, dt, kind="jerk") == pytest.approx(2 * exact, rel=1e-12)
     # read with the canonical gamma (= 2 gamma_H), the printed formula is exact
     assert steady_state_lag_huang(g.gamma, B, dt, kind="jerk") == pytest.approx(exact, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "gains", [Gains(0.3, 0.05), Gains(0.02, 0.0002), Gains(0.5, 0.2, 0.02), Gains(0.1, 0.005, 1e-5)]
+)
+def test_eq8_integrand_is_frequency_response_bit_for_bit(gains):
+    """eq 8's quadrature integrand (gains' work hoisted) gives the very bits of
+    |frequency_response|^2, so the quadrature and its digits are unchanged."""
+    from abglib.analysis import frequency_response
+    from abglib.replications.huang.printed import _x_pred_power
+
+    f = _x_pred_power(gains)
+    rng = np.random.default_rng(5)
+    xs = np.concatenate(
+        [rng.uniform(-np.pi, np.pi, 500), np.geomspace(1e-9, np.pi, 50), [0.0, np.pi, -np.pi]]
+    )
+    for x in map(float, xs):
+        want = float(np.abs(frequency_response(gains, "x_pred", np.asarray(x))) ** 2)
+        assert f(x) == want, x

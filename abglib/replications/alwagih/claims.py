@@ -58,8 +58,33 @@ def _f(x, d=4) -> str:
     return format_number(float(x), d)
 
 
-def _row(wide, noise, coord):
+#: The study's tables computed from the printed numbers alone (shared between studies).
+_PRINTED_TABLES = frozenset({"printed_wide", "consistency", "printed_ttests"})
+
+
+def _row(s, table: str, noise, coord):
+    """Experiments x M1-M5 of one noise and coordinate of the study's ``table`` (``mc`` or
+    ``printed_wide``), selected once per study (the claims ask for them ~900 times)."""
+    wide = getattr(s, table)
+    key = ("row", table, noise, coord)
+    return s.memo(key, lambda: _select_row(wide, noise, coord), table in _PRINTED_TABLES)
+
+
+def _select_row(wide, noise, coord):
     return wide.xs(noise, level="noise").xs(coord, level="coord")[list(PAPER_METHODS)]
+
+
+def _lookup(s, table: str, keys: tuple, values: tuple) -> dict:
+    """The row of the study's long ``table`` whose ``keys`` columns equal ``values`` (the
+    first, as ``[mask].iloc[0]``), from an index built once per study."""
+
+    def build():
+        out = {}
+        for r in getattr(s, table).to_dict("records"):
+            out.setdefault(tuple(r[k] for k in keys), r)
+        return out
+
+    return s.memo(("lookup", table, keys), build, table in _PRINTED_TABLES)[values]
 
 
 def _expected_positive(base: str, coord: str, method: str) -> bool:
@@ -72,13 +97,7 @@ def _expected_positive(base: str, coord: str, method: str) -> bool:
 def _t12(s, key):
     table, exp, coord, m = key.split(".")
     noise, e = _noise(table), int(exp[1:])
-    sm = s.summary
-    r = sm[
-        (sm["noise"] == noise)
-        & (sm["experiment"] == e)
-        & (sm["coord"] == coord)
-        & (sm["method"] == m)
-    ].iloc[0]
+    r = _lookup(s, "summary", ("noise", "experiment", "coord", "method"), (noise, e, coord, m))
     real = s.real.loc[(noise, e, coord), m]
     return Result(
         None,
@@ -94,14 +113,8 @@ def _t12(s, key):
 def _t3456(s, key):
     table, row, coord, m = key.split(".")
     t = int(table[1])
-    cons = s.consistency
     label = row if t in (3, 4) else f"experiment {row[1:]}"
-    r = cons[
-        (cons["table"] == t)
-        & (cons["row"] == label)
-        & (cons["coord"] == coord)
-        & (cons["method"] == m)
-    ].iloc[0]
+    r = _lookup(s, "consistency", ("table", "row", "coord", "method"), (t, label, coord, m))
     printed = float(parse_printed(s.printed(key)))
     src = 1 if t in (3, 5) else 2
     return Result(
@@ -136,7 +149,7 @@ def _pc_example(s):
 @CLAIMS.family(r"claim\.printed\.t[12]\.m5_lowest\.[XY]")
 def _p_m5_lowest(s, key):
     table, coord = key.split(".")[2], key.split(".")[4]
-    w = _row(s.printed_wide, _noise(table), coord)
+    w = _row(s, "printed_wide", _noise(table), coord)
     ok = (w["M5"] < w.drop(columns="M5").min(axis=1)).all()
     margin = (w.drop(columns="M5").min(axis=1) / w["M5"]).min()
     return Result(
@@ -149,7 +162,7 @@ def _p_m5_lowest(s, key):
 @CLAIMS.family(r"claim\.printed\.conclusion\.(white|coloured)\.[XY]")
 def _p_conclusion(s, key):
     noise, coord = key.split(".")[3], key.split(".")[4]
-    m = _row(s.printed_wide, noise, coord).mean()
+    m = _row(s, "printed_wide", noise, coord).mean()
     return Result(
         bool(m["M5"] < m["M4"] < m["M3"]),
         "printed mean RMSE over the five experiments (m): "
@@ -162,13 +175,13 @@ def _p_conclusion(s, key):
 def _p_ttest(s, key):
     _, _, _, table, base, coord, m = key.split(".")
     where = f"printed Table {int(table[1]) - 2}"
-    return _ttest_result(s.printed_ttests, _noise(table), base, coord, m, where)
+    return _ttest_result(s, "printed_ttests", _noise(table), base, coord, m, where)
 
 
 @CLAIMS.family(r"claim\.printed\.t[34]\.sign\.M[12]\.[XY]\.M[345]")
 def _p_sign(s, key):
     _, _, table, _, base, coord, m = key.split(".")
-    w = _row(s.printed_wide, _noise(table), coord)
+    w = _row(s, "printed_wide", _noise(table), coord)
     d = float((w[base] - w[m]).mean())
     want = _expected_positive(base, coord, m)
     return Result(
@@ -189,7 +202,7 @@ def _p_sign_pattern(s, key):
                 if how == "as_printed":
                     d = float(parse_printed(s.printed(f"{table}.{base}.{coord}.{m}")))
                 else:
-                    w = _row(s.printed_wide, _noise(table), coord)
+                    w = _row(s, "printed_wide", _noise(table), coord)
                     d = float((w[base] - w[m]).mean())
                 signs.append(((base, coord, m), d))
     wrong = [
@@ -238,13 +251,8 @@ def _p_suggested(s, key):
     )
 
 
-def _ttest_result(tests, noise, base, coord, m, where):
-    t = tests[
-        (tests["noise"] == noise)
-        & (tests["base"] == base)
-        & (tests["coord"] == coord)
-        & (tests["method"] == m)
-    ].iloc[0]
+def _ttest_result(s, tests, noise, base, coord, m, where):
+    t = _lookup(s, tests, ("noise", "base", "coord", "method"), (noise, base, coord, m))
     return Result(
         bool(t["p_value"] < 0.001),
         f"{where}: paired t over {int(t['pairs'])} experiments, t = {t['t']:.3g}, "
@@ -263,7 +271,7 @@ def _key_noise_coord(key):
 )
 def _m5_lowest(s, key):
     noise, coord = _key_noise_coord(key)
-    m = _row(s.mc, noise, coord)
+    m = _row(s, "mc", noise, coord)
     others = m.drop(columns="M5").min(axis=1)
     lost = [f"e{e}" for e, ok in (m["M5"] < others).items() if not ok]
     return Result(
@@ -277,8 +285,8 @@ def _m5_lowest(s, key):
 @CLAIMS.family(r"claim\.t[12]\.ranking\.[XY]", depends_on=lambda k: _deps(_noise(k.split(".")[1])))
 def _ranking(s, key):
     noise, coord = _key_noise_coord(key)
-    ours = rank_methods(_row(s.mc, noise, coord).mean().to_dict())
-    printed = rank_methods(_row(s.printed_wide, noise, coord).mean().to_dict())
+    ours = rank_methods(_row(s, "mc", noise, coord).mean().to_dict())
+    printed = rank_methods(_row(s, "printed_wide", noise, coord).mean().to_dict())
     return Result(
         ours == printed, f"printed (mean of the table): {printed}; reconstruction: {ours}"
     )
@@ -290,7 +298,7 @@ def _ranking(s, key):
 )
 def _conclusion(s, key):
     noise, coord = key.split(".")[2], key.split(".")[3]
-    m = _row(s.mc, noise, coord).mean()
+    m = _row(s, "mc", noise, coord).mean()
     return Result(
         bool(m["M5"] < m["M4"] < m["M3"]),
         "Monte Carlo mean RMSE over the experiments (m): "
@@ -304,7 +312,7 @@ def _conclusion(s, key):
 )
 def _size(s, key):
     _, table, _, coord, m = key.split(".")
-    w = _row(s.mc, _noise(table), coord)
+    w = _row(s, "mc", _noise(table), coord)
     pc = float(np.mean((w["M1"] - w[m]) / w["M1"] * 100))
     pcs = [float(parse_printed(s.printed(f"{table}.e{e}.{coord}.{m}"))) for e in range(1, 6)]
     return Result(
@@ -319,7 +327,7 @@ def _size(s, key):
 )
 def _sign(s, key):
     _, table, _, base, coord, m = key.split(".")
-    w = _row(s.mc, _noise(table), coord)
+    w = _row(s, "mc", _noise(table), coord)
     ours = float((w[base] - w[m]).mean())
     printed = float(parse_printed(s.printed(f"{table}.{base}.{coord}.{m}")))
     return Result(
@@ -333,7 +341,7 @@ def _sign_pattern(s, key):
     wrong = []
     for base in BASES:
         for coord in ("X", "Y"):
-            w = _row(s.mc, noise, coord)
+            w = _row(s, "mc", noise, coord)
             for m in COMPARED:
                 d = float((w[base] - w[m]).mean())
                 if (d > 0) != _expected_positive(base, coord, m):
@@ -358,7 +366,7 @@ def _sign_pattern(s, key):
 def _ttest(s, key):
     _, _, table, base, coord, m = key.split(".")
     return _ttest_result(
-        s.ttests, _noise(table), base, coord, m, f"reconstruction, run {s.cfg['realisation']}"
+        s, "ttests", _noise(table), base, coord, m, f"reconstruction, run {s.cfg['realisation']}"
     )
 
 
@@ -503,7 +511,7 @@ def _p_suggested_better(s, key):
     table = key.split(".")[2]
     lost = []
     for coord in ("X", "Y"):
-        m = _row(s.printed_wide, _noise(table), coord).mean()
+        m = _row(s, "printed_wide", _noise(table), coord).mean()
         for new in COMPARED:
             for base in BASES:
                 if not m[new] < m[base]:

@@ -65,12 +65,17 @@ def printed_values(published: pd.DataFrame, table: int) -> dict[str, float]:
 
 
 def _interval(f, values, half_units):
-    """Range of ``f`` over the box ``values +- half_units`` (f monotone in each input)."""
+    """Range of ``f`` over the box ``values +- half_units`` (f monotone in each input).
+
+    ``f`` maps corner points, one per row of a ``(corners, inputs)`` array, to their
+    values (row by row the numbers a call per corner gives: a reduction along a row of
+    a few elements adds them in the same order).
+    """
     values = np.asarray(values, float)
     h = np.asarray(half_units, float)
     corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * values.size)).reshape(values.size, -1).T
-    vals = [f(values + c * h) for c in corners]
-    return min(vals), max(vals)
+    vals = f(values + corners * h)
+    return float(np.min(vals)), float(np.max(vals))
 
 
 def printed_consistency(t12: pd.DataFrame) -> pd.DataFrame:
@@ -110,7 +115,10 @@ def printed_consistency(t12: pd.DataFrame) -> pd.DataFrame:
                     def f(x, k=k):
                         return float(np.mean(x[:k] - x[k:]))
 
-                    lo, hi = _interval(f, v, h)
+                    def fs(x, k=k):
+                        return np.mean(x[:, :k] - x[:, k:], axis=1)
+
+                    lo, hi = _interval(fs, v, h)
                     rows.append(
                         {
                             "table": tdiff,
@@ -131,7 +139,10 @@ def printed_consistency(t12: pd.DataFrame) -> pd.DataFrame:
                     def pc(x):
                         return float(methods.percentage_change(x[0], x[1]))
 
-                    lo, hi = _interval(pc, v, h)
+                    def pcs(x):
+                        return methods.percentage_change(x[:, 0], x[:, 1])
+
+                    lo, hi = _interval(pcs, v, h)
                     rows.append(
                         {
                             "table": tpc,

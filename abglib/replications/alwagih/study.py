@@ -217,23 +217,29 @@ def paired_ttests(rmse_wide: pd.DataFrame) -> pd.DataFrame:
     from scipy import stats
 
     rows = []
+    pairs = [(base, m) for base in BASES for m in COMPARED]
     for (noise, coord), g in rmse_wide.groupby(level=["noise", "coord"], sort=False):
-        for base in BASES:
-            for m in COMPARED:
-                d = (g[base] - g[m]).to_numpy()
-                t, p = stats.ttest_rel(g[base].to_numpy(), g[m].to_numpy())
-                rows.append(
-                    {
-                        "noise": noise,
-                        "base": base,
-                        "coord": coord,
-                        "method": m,
-                        "pairs": d.size,
-                        "mean_difference": d.mean(),
-                        "t": float(t),
-                        "p_value": float(p),
-                    }
-                )
+        col = {c: g[c].to_numpy() for c in (*BASES, *COMPARED)}
+        # every pair's test at once, column by column (the same numbers as one call each)
+        tt, pp = stats.ttest_rel(
+            np.column_stack([col[base] for base, _ in pairs]),
+            np.column_stack([col[m] for _, m in pairs]),
+            axis=0,
+        )
+        for (base, m), t, p in zip(pairs, tt, pp, strict=True):
+            d = col[base] - col[m]
+            rows.append(
+                {
+                    "noise": noise,
+                    "base": base,
+                    "coord": coord,
+                    "method": m,
+                    "pairs": d.size,
+                    "mean_difference": d.mean(),
+                    "t": float(t),
+                    "p_value": float(p),
+                }
+            )
     return pd.DataFrame(rows)
 
 
@@ -324,6 +330,11 @@ def reconstructed_scenarios(scenarios: Mapping, cfg: Mapping) -> dict:
     return out
 
 
+#: What depends on the published table only (:meth:`AlwagihStudy.memo`), for the last
+#: published table seen (``"published"``): the studies of one evaluation share it.
+_PRINTED: dict = {}
+
+
 def _key(x) -> str:
     return json.dumps(x, sort_keys=True, default=str)
 
@@ -349,6 +360,23 @@ class AlwagihStudy(Study):
 
     doc = "alwagih"
 
+    def memo(self, key, compute, printed: bool = False):
+        """``compute()``, once per study under ``key`` (the claims' selections from its
+        tables: each is asked for hundreds of times); ``printed=True``: once for every
+        study of the same published table (what depends on the printed numbers only, the
+        same for each study :func:`abglib.replications.evaluate` makes at another input).
+        """
+        if printed:
+            if _PRINTED.get("published") is not self.published:
+                _PRINTED.clear()
+                _PRINTED["published"] = self.published
+            cache = _PRINTED
+        else:
+            cache = self.__dict__.setdefault("_memo", {})
+        if key not in cache:
+            cache[key] = compute()
+        return cache[key]
+
     # ------------------------------------------------------------ the reconstruction
     @cached_property
     def scenarios(self) -> dict:
@@ -358,15 +386,7 @@ class AlwagihStudy(Study):
         """RMSE (eq 26) of one method on every run, coordinate and experiment (long table:
         noise, experiment, scenario, coord, method, run, rmse); ``cfg`` replaces the
         ``alwagih`` section (the sensitivity sweep)."""
-        cfg = self.cfg if cfg is None else cfg
-        settings = _key({k: cfg[k] for k in METHOD_SETTINGS[method]})
-        labels, values = [], []
-        for noise, specs in self.scenarios.items():
-            for e, (name, spec) in enumerate(specs, start=1):
-                sj = _key(spec)
-                for c in sorted(spec["tracks"]):
-                    values.append(_rmse(name, sj, c, method, settings))
-                    labels.append((noise, e, name, c.upper()))
+        labels, values = self._runs(method, cfg)
         sizes = [r.size for r in values]
         names = ("noise", "experiment", "scenario", "coord")
         table = {
@@ -382,6 +402,51 @@ class AlwagihStudy(Study):
         )
 
     @cached_property
+    def _series(self) -> list:
+        """``(noise, experiment, scenario, COORD, spec_json)`` of every series, in table order."""
+        out = []
+        for noise, specs in self.scenarios.items():
+            for e, (name, spec) in enumerate(specs, start=1):
+                sj = _key(spec)
+                out.extend((noise, e, name, c, sj) for c in sorted(spec["tracks"]))
+        return out
+
+    def _runs(self, method: str, cfg: Mapping | None = None) -> tuple[list, list]:
+        """Labels ``(noise, experiment, scenario, COORD)`` of every series and the RMSE of
+        ``method`` on each of its runs (arrays, from the cache), in table order."""
+        cfg = self.cfg if cfg is None else cfg
+        settings = _key({k: cfg[k] for k in METHOD_SETTINGS[method]})
+        labels = [(noise, e, name, c.upper()) for noise, e, name, c, _ in self._series]
+        values = [_rmse(name, sj, c, method, settings) for _, _, name, c, sj in self._series]
+        return labels, values
+
+    def _means(self, method: str, cfg: Mapping | None, group) -> dict:
+        """``{group(label): mean RMSE}`` of ``method`` over the runs of every series whose
+        label (``noise, experiment, scenario, COORD``) falls in the group, by pandas' own
+        grouped mean (the numbers ``groupby(...).mean()`` of the long table gives: the
+        values of a group in table order), without building that table."""
+        labels, values = self._runs(method, cfg)
+        keys = list(dict.fromkeys(group(lab) for lab in labels))
+        code = {k: i for i, k in enumerate(keys)}
+        codes = np.repeat([code[group(lab)] for lab in labels], [v.size for v in values])
+        means = pd.Series(np.concatenate(values)).groupby(codes, sort=True).mean().to_numpy()
+        return dict(zip(keys, means, strict=True))
+
+    def _wide_of(self, cell) -> pd.DataFrame:
+        """M1-M5 by series: index (noise, experiment, coord), ``cell(method)`` giving
+        ``{(noise, experiment, scenario, COORD): value}``."""
+        cols = {m: cell(m) for m in PAPER_METHODS}
+        labels = list(cols["M1"])
+        index = pd.MultiIndex.from_tuples(
+            [(n, e, c) for n, e, _, c in labels], names=["noise", "experiment", "coord"]
+        )
+        return pd.DataFrame(
+            {m: [cols[m][lab] for lab in labels] for m in PAPER_METHODS},
+            index=index,
+            columns=pd.Index(list(PAPER_METHODS), name="method"),
+        )
+
+    @cached_property
     def paper_rmse(self) -> pd.DataFrame:
         return pd.concat([self.rmse(m) for m in PAPER_METHODS], ignore_index=True)
 
@@ -392,14 +457,20 @@ class AlwagihStudy(Study):
 
     @cached_property
     def mc(self) -> pd.DataFrame:
-        """Monte Carlo mean RMSE of M1-M5: index (noise, experiment, coord), columns methods."""
-        return _wide(self.paper_rmse, "rmse", aggfunc="mean")[list(PAPER_METHODS)]
+        """Monte Carlo mean RMSE of M1-M5: index (noise, experiment, coord), columns methods
+        (the pivot of :attr:`paper_rmse` by its mean, computed from the cached runs)."""
+        return self._wide_of(lambda m: self._means(m, None, lambda lab: lab))
 
     @cached_property
     def real(self) -> pd.DataFrame:
         """RMSE of M1-M5 on the configured realisation (the paper's single run)."""
-        one = self.paper_rmse[self.paper_rmse["run"] == int(self.cfg["realisation"])]
-        return _wide(one, "rmse")[list(PAPER_METHODS)]
+        run = int(self.cfg["realisation"])
+
+        def cell(m):
+            labels, values = self._runs(m)
+            return {lab: v[run] for lab, v in zip(labels, values, strict=True)}
+
+        return self._wide_of(cell)
 
     @cached_property
     def ttests(self) -> pd.DataFrame:
@@ -413,8 +484,13 @@ class AlwagihStudy(Study):
     def mean_rmse(self, cfg: Mapping) -> pd.Series:
         """Monte Carlo mean RMSE of M1-M5 averaged over the experiments at ``cfg``,
         indexed (noise, coord, method)."""
-        table = pd.concat([self.rmse(m, cfg) for m in PAPER_METHODS], ignore_index=True)
-        return table.groupby(["noise", "coord", "method"], sort=False)["rmse"].mean()
+        keys, values = [], []
+        for m in PAPER_METHODS:
+            means = self._means(m, cfg, lambda lab: (lab[0], lab[3]))
+            keys.extend((noise, coord, m) for noise, coord in means)
+            values.extend(means.values())
+        index = pd.MultiIndex.from_tuples(keys, names=["noise", "coord", "method"])
+        return pd.Series(values, index=index, name="rmse")
 
     @cached_property
     def m5_bank(self) -> pd.DataFrame:
@@ -425,29 +501,31 @@ class AlwagihStudy(Study):
             cfg = dict(
                 self.cfg, m5=dict(self.cfg["m5"], alphas=dict(self.cfg["m5"]["alphas"], n=int(k)))
             )
-            g = self.rmse("M5", cfg).groupby(["noise", "coord"], sort=False)["rmse"].mean()
+            g = self._means("M5", cfg, lambda lab: (lab[0], lab[3]))
             for (noise, coord), v in g.items():
                 rows.append({"noise": noise, "coord": coord, "K": int(k), "M5": float(v)})
         return pd.DataFrame(rows)
 
     # ------------------------------------------------------------ the printed tables
-    @cached_property
+    @property
     def t12(self) -> pd.DataFrame:
-        return printed_t12(self.published)
+        return self.memo("t12", lambda: printed_t12(self.published), printed=True)
 
-    @cached_property
+    @property
     def printed_wide(self) -> pd.DataFrame:
         """Printed Tables 1-2: index (noise, experiment, coord), columns M1-M5."""
-        return _wide(self.t12, "value")[list(PAPER_METHODS)]
+        return self.memo(
+            "printed_wide", lambda: _wide(self.t12, "value")[list(PAPER_METHODS)], printed=True
+        )
 
-    @cached_property
+    @property
     def consistency(self) -> pd.DataFrame:
-        return printed_consistency(self.t12)
+        return self.memo("consistency", lambda: printed_consistency(self.t12), printed=True)
 
-    @cached_property
+    @property
     def printed_ttests(self) -> pd.DataFrame:
         """Section 7's paired t-tests on the printed Tables 1-2 themselves."""
-        return paired_ttests(self.printed_wide)
+        return self.memo("printed_ttests", lambda: paired_ttests(self.printed_wide), printed=True)
 
     # ------------------------------------------------------------ report tables
     def tracks(self) -> pd.DataFrame:

@@ -27,7 +27,8 @@ import numpy as np
 import scipy.integrate
 
 from ..._checks import AbglibValueError, check_finite, check_positive, scalar_or_array
-from ...analysis import frequency_response, require_stable
+from ...analysis import require_stable
+from ...analysis._transfer import _w_forms
 from ...conventions import from_huang
 from ...gains import Gains
 
@@ -239,16 +240,37 @@ def enbw_eq8_two_sided(gains: Gains, dt=1.0) -> float:
     """
     require_stable(gains, _UNSTABLE)
     T = float(check_positive("dt", dt))
-
-    def f(x):
-        return float(np.abs(frequency_response(gains, "x_pred", np.asarray(x))) ** 2)
-
+    f = _x_pred_power(gains)
     edges = np.concatenate([-np.geomspace(np.pi, 1e-5, 30), [0.0], np.geomspace(1e-5, np.pi, 30)])
     total = sum(
         scipy.integrate.quad(f, lo, hi, limit=200, epsrel=1e-11, epsabs=0.0)[0]
         for lo, hi in zip(edges[:-1], edges[1:], strict=True)
     )
     return total / (2.0 * np.pi * T)
+
+
+def _x_pred_power(gains: Gains):
+    """``f(wT) = |H(e^{j wT})|^2`` of the prediction ``X_p/X`` for scalar gains: the
+    arithmetic of :func:`abglib.analysis.frequency_response` (eq 39 in powers of
+    ``w = z - 1``, its coefficients from the same ``_w_forms``), in the same order on the
+    same numpy types, so every value is the same bits (tested), with the gains' checks
+    and coefficients done once instead of at each of quadrature's ~1300 points."""
+    a, b, g = (np.asarray(v, dtype=float) for v in gains.as_arrays())
+    if a.ndim or b.ndim or g.ndim:
+        raise AbglibValueError(f"gains must be scalar, got shapes {a.shape}, {b.shape}, {g.shape}")
+    num_w, zf, den_w = _w_forms(a, b, g, "x_pred", 1.0, bool(g == 0.0))
+
+    def f(x):
+        w_arr = np.asarray(x, dtype=np.float64)
+        z = np.exp(1j * w_arr)
+        w = 2j * np.sin(w_arr / 2.0) * np.exp(0.5j * w_arr)
+        num = sum(c * w**k for k, c in enumerate(num_w)) * z**zf
+        den = sum(c * w**k for k, c in enumerate(den_w))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            h = num / den
+        return float(np.abs(complex(h)) ** 2)
+
+    return f
 
 
 def _huang_stable(alpha_h, beta_h, gamma_h):
