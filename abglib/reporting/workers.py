@@ -32,7 +32,7 @@ from pathlib import Path
 
 from .pipeline import JobFailed
 
-__all__ = ["PRELOAD", "JobFailed", "run_script", "script_object", "warm_up"]
+__all__ = ["PRELOAD", "JobFailed", "load_kernels", "run_script", "script_object", "warm_up"]
 
 #: Modules the fork server imports once, so that no job pays for them (a module that
 #: fails to import is skipped: the job that needs it will say why).
@@ -66,6 +66,8 @@ PRELOAD = [
     "abglib.reporting.pipeline",
     "abglib.reporting.plotting",
     "abglib.reporting.render",
+    # last: the compiled loops themselves (load_kernels), with everything above in place
+    "abglib.reporting._warm_kernels",
 ]
 
 _CONTEXT = None
@@ -94,6 +96,37 @@ def _context():
             ctx.set_forkserver_preload(PRELOAD)
             _CONTEXT = ctx
     return _CONTEXT
+
+
+def load_kernels() -> None:
+    """Load numba's cached machine code of the loops most jobs run, by calling them once on
+    tiny inputs: the tracker (batched and per-series, alpha-beta and alpha-beta-gamma,
+    fixed and time-varying gains) and methods M1-M5. Signatures are those the jobs use
+    (float64, C-contiguous). A failure here is not the server's to report: the job that
+    needs the loop loads it itself and says what is wrong.
+    """
+    try:
+        import numpy as np
+
+        from .. import methods, track
+        from ..design import standard_from_alpha
+
+        z = np.cumsum(np.ones((8, 32)), axis=-1)
+        for order in (2, 3):
+            g = standard_from_alpha(0.5, order=order)
+            for init in ("zero", "two_point"):
+                track(z, g, dt=1.0, init=init)
+                track(z[0], g, dt=1.0, init=init)
+            varying = type(g)(*(np.full(32, float(v)) for v in g))
+            track(z[0], varying, dt=1.0)
+        methods.m1(z, 0.5)
+        methods.m2(z)
+        methods.m3(z, np.linspace(0.1, 1.0, 3))
+        methods.m4(z, 0.5, 4, np.linspace(0.1, 0.9, 3))
+        methods.m5(z, np.linspace(0.1, 0.9, 3))
+        methods.m5(z, np.linspace(0.1, 0.9, 3), causal=True)
+    except Exception:  # noqa: BLE001 - see the docstring
+        pass
 
 
 def warm_up() -> None:

@@ -185,9 +185,7 @@ class FaaBendixStudy(Study):
     def monte_carlo(self) -> pd.DataFrame:
         """Seeded Monte Carlo of the memo's ratios (row i uses seed + i), 95 % CIs and the
         standard score of the variance against the exact (Lyapunov) one."""
-        return pd.DataFrame([self.monte_carlo_row(p) for p in self.periods]).set_index(
-            "period_s"
-        )
+        return pd.DataFrame([self.monte_carlo_row(p) for p in self.periods]).set_index("period_s")
 
     def monte_carlo_row(self, p) -> dict:
         """One period's row of :attr:`monte_carlo` (seed + its index among the periods),
