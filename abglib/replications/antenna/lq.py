@@ -19,6 +19,7 @@ import numpy as np
 from numba import njit
 
 from ..._checks import AbglibValueError, check_positive
+from ._smallmat import gauss_solve, matmul, matmul_tn
 
 __all__ = [
     "TrackerMatrices",
@@ -76,11 +77,6 @@ def riccati_iterate(a, b, qx, r, tol=1e-13, max_iter=200000):
     return newton_polish(a, b, qx, r, p)
 
 
-def _residual(a, b, qx, r, p) -> float:
-    k = np.linalg.solve(r + b.T @ p @ b, b.T @ p @ a)
-    return float(np.max(np.abs(qx + a.T @ p @ (a - b @ k) - p)))
-
-
 def newton_polish(a, b, qx, r, p, steps: int = 4):
     """Refine a converged Riccati solution ``p`` of eq 2.12 by Newton (Kleinman) steps.
 
@@ -94,15 +90,94 @@ def newton_polish(a, b, qx, r, p, steps: int = 4):
     quadratically, so the result is the fixed point to within round-off, whatever the
     kernel. A step is kept only while the residual of eq 2.12 decreases.
     """
-    import scipy.linalg
+    a, b, qx = (np.ascontiguousarray(x, dtype=float) for x in (a, b, qx))
+    r = np.ascontiguousarray(np.atleast_2d(np.asarray(r, dtype=float)))
+    return _newton(a, b, qx, r, np.array(p, dtype=float), int(steps))
 
-    a, b, qx = (np.asarray(x, dtype=float) for x in (a, b, qx))
-    r = np.atleast_2d(np.asarray(r, dtype=float))
+
+@njit(cache=True)
+def _gain(a, b, r, p):
+    # K = (R + B^T P B)^-1 B^T P A (eq 2.19 with 2.20)
+    n, m = b.shape
+    pb = np.empty((n, m))
+    matmul(p, b, pb)
+    w = np.empty((m, m))
+    matmul_tn(b, pb, w)
+    for i in range(m):
+        for j in range(m):
+            w[i, j] += r[i, j]
+    pa = np.empty((n, n))
+    matmul(p, a, pa)
+    k = np.empty((m, n))
+    matmul_tn(b, pa, k)
+    gauss_solve(w, k)
+    return k
+
+
+@njit(cache=True)
+def _residual(a, b, qx, r, p):
+    # max |Qx + A^T P (A - B K) - P|, the residual of eq 2.12
+    n = a.shape[0]
+    k = _gain(a, b, r, p)
+    acl = _closed(a, b, k)
+    pa = np.empty((n, n))
+    matmul(p, acl, pa)
+    t = np.empty((n, n))
+    matmul_tn(a, pa, t)
+    res = 0.0
+    for i in range(n):
+        for j in range(n):
+            res = max(res, abs(qx[i, j] + t[i, j] - p[i, j]))
+    return res
+
+
+@njit(cache=True)
+def _closed(a, b, k):
+    # A - B K
+    out = a.copy()
+    n, m = b.shape
+    for i in range(n):
+        for l in range(m):
+            bil = b[i, l]
+            for j in range(n):
+                out[i, j] -= bil * k[l, j]
+    return out
+
+
+@njit(cache=True)
+def _dlyap(acl, w):
+    # P = Acl^T P Acl + W by the Kronecker system (I - kron(Acl^T, Acl^T)) vec P = vec W,
+    # scipy.linalg.solve_discrete_lyapunov(Acl^T, W, method="direct")
+    n = acl.shape[0]
+    big = np.empty((n * n, n * n))
+    x = np.empty((n * n, 1))
+    for i in range(n):
+        for j in range(n):
+            row = i * n + j
+            x[row, 0] = w[i, j]
+            for kk in range(n):
+                for ll in range(n):
+                    big[row, kk * n + ll] = -acl[kk, i] * acl[ll, j]
+            big[row, row] += 1.0
+    gauss_solve(big, x)
+    return x.reshape(n, n)
+
+
+@njit(cache=True)
+def _newton(a, b, qx, r, p, steps):
+    # the Newton steps of newton_polish
+    n = a.shape[0]
     res = _residual(a, b, qx, r, p)
-    for _ in range(int(steps)):
-        k = np.linalg.solve(r + b.T @ p @ b, b.T @ p @ a)
-        acl = a - b @ k
-        p_new = scipy.linalg.solve_discrete_lyapunov(acl.T, qx + k.T @ r @ k, method="direct")
+    for _ in range(steps):
+        k = _gain(a, b, r, p)
+        acl = _closed(a, b, k)
+        rk = np.empty_like(k)
+        matmul(r, k, rk)
+        w = qx.copy()
+        kr = np.empty((n, n))
+        matmul_tn(k, rk, kr)
+        w += kr
+        p_new = _dlyap(acl, w)
         p_new = 0.5 * (p_new + p_new.T)
         res_new = _residual(a, b, qx, r, p_new)
         if not res_new < res:
@@ -113,16 +188,42 @@ def newton_polish(a, b, qx, r, p, steps: int = 4):
 
 @njit(cache=True)
 def _riccati_loop(a, b, rinv_bt, qx, p, tol, max_iter):
-    # the iteration of riccati_iterate, compiled (the same formulas, step by step)
+    # the iteration of riccati_iterate, compiled: P <- Qx + A^T P (I + B R^-1 B^T P)^-1 A,
+    # written out on preallocated buffers (_smallmat)
     n = a.shape[0]
-    at = np.ascontiguousarray(a.T)
-    brb = b @ rinv_bt
+    brb = np.empty((n, n))
+    matmul(b, rinv_bt, brb)
+    p = p.copy()
+    p_new = np.empty((n, n))
+    w = np.empty((n, n))
+    x = np.empty((n, n))
+    y = np.empty((n, n))
     for _ in range(max_iter):
-        p_new = qx + at @ p @ np.linalg.solve(np.eye(n) + brb @ p, a)
-        p_new = 0.5 * (p_new + p_new.T)
-        if np.max(np.abs(p_new - p)) <= tol * max(1.0, np.max(np.abs(p_new))):
+        matmul(brb, p, w)
+        for i in range(n):
+            w[i, i] += 1.0
+        x[:, :] = a
+        if not gauss_solve(w, x):
+            return p, False
+        matmul(p, x, y)
+        matmul_tn(a, y, p_new)
+        big = 0.0
+        for i in range(n):
+            for j in range(n):
+                p_new[i, j] += qx[i, j]
+        for i in range(n):
+            for j in range(i + 1, n):
+                v = 0.5 * (p_new[i, j] + p_new[j, i])
+                p_new[i, j] = v
+                p_new[j, i] = v
+        change = 0.0
+        for i in range(n):
+            for j in range(n):
+                big = max(big, abs(p_new[i, j]))
+                change = max(change, abs(p_new[i, j] - p[i, j]))
+        if change <= tol * max(1.0, big):
             return p_new, True
-        p = p_new
+        p, p_new = p_new, p
     return p, False
 
 
