@@ -77,9 +77,7 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
     if not _symmetric(vv) or np.linalg.eigvalsh(vv).min() <= 0.0:
         raise AbglibValueError(f"V_v must be symmetric positive definite, got {vv.tolist()}")
     vw = np.asarray(vw, dtype=float)
-    if not _symmetric(vw) or np.linalg.eigvalsh(vw).min() < -1e-15 * max(
-        1.0, np.abs(vw).max()
-    ):
+    if not _symmetric(vw) or np.linalg.eigvalsh(vw).min() < -1e-15 * max(1.0, np.abs(vw).max()):
         raise AbglibValueError("V_w must be symmetric positive semidefinite")
     a = np.ascontiguousarray(a, dtype=float)
     m = np.ascontiguousarray(m, dtype=float)
