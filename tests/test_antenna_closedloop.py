@@ -212,9 +212,10 @@ def test_time_major_kalman_loop_equals_the_phase_loop_bit_for_bit(ctrl, order, v
 
 
 def test_kalman_loop_skipping_zeros_falls_back_where_a_run_diverges(ctrl):
-    """A design with p_a halved diverges (app. H, spectral radius 10): the state overflows, and the loop that
-    skips the zeros of A - Kf M reports it (0 * inf = nan would have entered); the ensemble
-    then equals the dense reference loop bit for bit, nan and inf included."""
+    """A design with p_a halved diverges (app. H, spectral radius 10): the state overflows,
+    and the loop that skips the zeros of A - Kf M reports it (0 * inf = nan would have
+    entered); the ensemble then equals the dense reference loop bit for bit, nan and inf
+    included."""
     from abglib.replications.antenna import ensemble
 
     bad = design_controller(NOMINAL.scaled("p_a", 0.5), DT, 100.0, 1.0)

@@ -5,9 +5,14 @@ import numpy as np
 import pytest
 import scipy.linalg
 
-from abglib.replications.antenna import AntennaParams, discrete_plant, extended_model, taylor_model
+from abglib.replications.antenna import (
+    AntennaParams,
+    discrete_plant,
+    extended_model,
+    lq,
+    taylor_model,
+)
 from abglib.replications.antenna import kalman as kalman_mod
-from abglib.replications.antenna import lq
 from abglib.replications.antenna._smallmat import gauss_solve, matmul, matmul_nt, matmul_tn
 from tests.antenna_common import DT, NOMINAL_VALUES
 
