@@ -63,12 +63,14 @@ def test_lq_kernels_vs_blas_route_and_scipy(q):
     p_are = scipy.linalg.solve_discrete_are(a, b, qx, r)
     scale = np.abs(p_are).max()
     p_blas = _value_iteration_blas(a, b, qx, r)
-    p_loop, ok = lq._riccati_loop(a, b, np.linalg.solve(r, b.T), qx, qx.copy(), 1e-13, 200000)
+    p_loop, ok = lq._riccati_loops(a, b, np.linalg.solve(r, b.T), qx, qx.copy(), 1e-13, 200000)
     assert ok
     # the same iteration: round-off apart
     assert np.max(np.abs(p_loop - p_blas)) / scale < 1e-12
-    # polished: the fixed point (scipy's Schur route agrees to its own round-off)
-    p = lq.riccati_iterate(a, b, qx, r)
+    # polished: the fixed point, that of the BLAS route to round-off (scipy's Schur route
+    # agrees to its own round-off)
+    p = lq.riccati_solve(a, b, qx, r)
+    assert np.max(np.abs(p - lq.riccati_iterate(a, b, qx, r))) / scale < 1e-14
     assert np.max(np.abs(p - p_are)) / scale < 1e-13
     # one Newton step's Lyapunov solve against scipy's direct (Kronecker) method
     k = np.linalg.solve(r + b.T @ p @ b, b.T @ p @ a)
@@ -76,7 +78,9 @@ def test_lq_kernels_vs_blas_route_and_scipy(q):
     w = qx + k.T @ r @ k
     ref = scipy.linalg.solve_discrete_lyapunov(acl.T, w, method="direct")
     np.testing.assert_allclose(lq._dlyap(acl, w), ref, rtol=1e-10, atol=1e-12 * scale)
-    assert lq._residual(a, b, qx, r, p) < 1e-10 * scale
+    assert lq._residual_loops(a, b, qx, r, p) == pytest.approx(
+        lq._residual(a, b, qx, r, p), abs=1e-12 * scale
+    )
 
 
 def _kalman_blas(a, m, vw, vv, tol=1e-12):

@@ -35,7 +35,7 @@ from ...analysis._statespace import state_space
 from ...gains import Gains
 from .discretize import zoh
 from .kalman import extended_model, kalman_gains
-from .lq import TrackerMatrices, tracker_matrices
+from .lq import TrackerMatrices, riccati_solve, tracker_matrices
 from .model import AntennaParams, continuous_model
 from .objectmodel import sine_state, taylor_model
 from .preview import preview_gain, sine_model
@@ -78,15 +78,26 @@ class Controller:
     C: np.ndarray
 
 
-def design_controller(params: AntennaParams, dt: float, q: float, r: float) -> Controller:
-    """LQ tracker of the antenna with scalar weights ``Q``, ``R`` (ch. 2, 6), memoised."""
-    return _design_controller(params, float(check_positive("dt", dt)), float(q), float(r))
+def design_controller(
+    params: AntennaParams, dt: float, q: float, r: float, fast: bool = False
+) -> Controller:
+    """LQ tracker of the antenna with scalar weights ``Q``, ``R`` (ch. 2, 6), memoised.
+
+    ``fast``: solve eq 2.12 with :func:`.lq.riccati_solve` (compiled loops, the same fixed
+    point to round-off) instead of :func:`.lq.riccati_iterate`; for designs whose results
+    are only written rounded (app. H's sweeps over design factors).
+    """
+    return _design_controller(
+        params, float(check_positive("dt", dt)), float(q), float(r), bool(fast)
+    )
 
 
 @lru_cache(maxsize=1024)
-def _design_controller(params: AntennaParams, dt: float, q: float, r: float) -> Controller:
+def _design_controller(
+    params: AntennaParams, dt: float, q: float, r: float, fast: bool
+) -> Controller:
     a, b, c = discrete_plant(params, dt)
-    tm = tracker_matrices(a, b, c, [[q]], [[r]])
+    tm = tracker_matrices(a, b, c, [[q]], [[r]], solver=riccati_solve if fast else None)
     return Controller(params=params, dt=dt, tm=tm, A=a, B=b, C=c)
 
 

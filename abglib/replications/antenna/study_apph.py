@@ -53,7 +53,8 @@ def design_error_rows(s, name) -> list[dict]:
     n = int(np.ceil(float(rb["duration"]) / s.dt))
     rows = []
     for row in radius_rows(s, name):
-        ctrl = design_controller(s.params.scaled(name, row["factor"]), s.dt, s.q, s.r)
+        # the design of the radius (snapped into the quantised loop, :mod:`.ensemble`)
+        ctrl = design_controller(s.params.scaled(name, row["factor"]), s.dt, s.q, s.r, True)
         st = run_stats(
             s.params,
             ctrl,
