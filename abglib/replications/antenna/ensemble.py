@@ -51,7 +51,7 @@ def phase_states(amplitude, omega, t, order: int, phases) -> np.ndarray:
     return amplitude * omega**j * np.sin(omega * t[None, None, :] + ph + j * np.pi / 2.0)
 
 
-@lru_cache(maxsize=64)
+@lru_cache(maxsize=128)
 def _snapped_states(amplitude, omega, n_steps, dt, order, phases, shape):
     """``snap(phase_states(...))`` at ``t = k dt``, memoised (read-only): a robustness sweep
     simulates the same object track under many designs."""
@@ -72,7 +72,7 @@ def _snapped_plant(params, dt):
     return out
 
 
-@lru_cache(maxsize=512)
+@lru_cache(maxsize=1024)
 def _filter(a, b, c, n, order, dt, v_w, vv):
     """Kalman predictor matrices (A - Kf M, Kf, B) of one design, memoised: the object model
     does not depend on omega or the amplitude, so sweeps reuse the filter."""

@@ -21,7 +21,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg
 from numba import njit
 
 from ..._checks import AbglibValueError, check_positive
@@ -48,7 +47,9 @@ def extended_model(a, b, c, at, ct, gt) -> ExtendedModel:
     tracking error ``c x - ct x_t``.
     """
     n, p = a.shape[0], at.shape[0]
-    ae = scipy.linalg.block_diag(a, at)
+    ae = np.zeros((n + p, n + p))  # diag(A, At); scipy.linalg.block_diag, without its overhead
+    ae[:n, :n] = a
+    ae[n:, n:] = at
     be = np.vstack([b, np.zeros((p, b.shape[1]))])
     m = np.zeros((2, n + p))
     m[0, 1] = 1.0
