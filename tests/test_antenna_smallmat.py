@@ -103,16 +103,33 @@ def test_kalman_kernel_vs_blas_route_and_scipy(order, vw):
     at, ct, gt = taylor_model(order, DT)
     em = extended_model(a, b, c, at, ct, gt)
     vwm = vw * em.G @ em.G.T
-    q = kalman_mod.kalman_riccati(em.A, em.M, vwm, VV)
+    q = kalman_mod.kalman_riccati(em.A, em.M, vwm, VV, fast=True)
     n = em.n_antenna
     assert np.abs(q[:n]).max() == 0.0 and np.abs(q[:, :n]).max() == 0.0
     # the reduced iteration (object block) is the full one with the exact zeros left out
     q_full, ok = kalman_mod._kalman_iterate(em.A, em.M, vwm, VV, 1e-12, 1_000_000)
     assert ok and q.tobytes() == q_full.tobytes()
-    # against the BLAS route: the same iteration, round-off apart
+    # against the BLAS route (numba's, the default, and numpy's): the same iteration,
+    # round-off apart
     q_blas = _kalman_blas(em.A, em.M, vwm, VV)
     scale = np.abs(q_blas).max()
     assert np.max(np.abs(q - q_blas)) / scale < 1e-11
+    q_default = kalman_mod.kalman_riccati(em.A, em.M, vwm, VV)
+    assert np.max(np.abs(q_default - q_blas)) / scale < 1e-11
     # and the dual DARE of the object model (scipy)
     q_dare = scipy.linalg.solve_discrete_are(at.T, ct.T, vw * gt @ gt.T, VV[1:, 1:])
     assert np.max(np.abs(q[n:, n:] - q_dare)) / scale < 1e-9
+
+
+@pytest.mark.parametrize("factor", [0.1, 0.5, 2.0])
+def test_fast_spectral_radius_vs_blas_route(factor):
+    """App. H's radius by the compiled solvers against the default (BLAS) route: a stable
+    design's radius is the marginal mode's 1 to ~1e-8 (a double eigenvalue), an unstable
+    one's agrees to round-off."""
+    from abglib.replications.antenna.robustness import spectral_radius
+
+    args = (NOMINAL, "beta_d", factor, DT, 100.0, 1.0, 5, 5e-9, VV)
+    r0, r1 = spectral_radius(*args), spectral_radius(*args, fast=True)
+    assert abs(r1 - r0) < 1e-7
+    if r0 > 1.0 + 1e-6:
+        assert r1 == pytest.approx(r0, rel=1e-12)

@@ -84,8 +84,7 @@ def design_controller(
     """LQ tracker of the antenna with scalar weights ``Q``, ``R`` (ch. 2, 6), memoised.
 
     ``fast``: solve eq 2.12 with :func:`.lq.riccati_solve` (compiled loops, the same fixed
-    point to round-off) instead of :func:`.lq.riccati_iterate`; for designs whose results
-    are only written rounded (app. H's sweeps over design factors).
+    point to round-off) instead of :func:`.lq.riccati_iterate`.
     """
     return _design_controller(
         params, float(check_positive("dt", dt)), float(q), float(r), bool(fast)
@@ -158,17 +157,20 @@ def kalman_object_enbw(gains_kf, model, dt: float) -> float:
     return float((ll.T @ w @ ll)[0, 0] / (2.0 * dt))
 
 
-def closed_loop_matrix(true_params: AntennaParams, ctrl: Controller, order: int, v_w, v_v):
+def closed_loop_matrix(
+    true_params: AntennaParams, ctrl: Controller, order: int, v_w, v_v, fast=False
+):
     """Linear closed-loop map of ``[x, xhat]`` (object motion as input), app. H.
 
     Plant with ``true_params``, controller and Kalman filter designed with ``ctrl.params``;
     quantisation left out. The system is stable when the spectral radius is < 1 (up to the
     marginal modes that the exact antenna model leaves unexcited, see the report).
+    ``fast``: :func:`.kalman.kalman_gains`'s compiled loops.
     """
     a, b, c = discrete_plant(true_params, ctrl.dt)
     at, ct, gt = taylor_model(order, ctrl.dt)
     em = extended_model(ctrl.A, ctrl.B, ctrl.C, at, ct, gt)
-    kg = kalman_gains(em, v_w, v_v)
+    kg = kalman_gains(em, v_w, v_v, fast=fast)
     kt = preview_gain(ctrl.tm, at, ct)
     n = a.shape[0]
     ne = em.A.shape[0]

@@ -64,7 +64,7 @@ def _symmetric(x) -> bool:
     return bool(np.all(np.abs(x - x.T) <= 1e-8 + 1e-5 * np.abs(x.T)))
 
 
-def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
+def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000, fast=False):
     """Solve eq 7.15 by iterating it from ``Q = Vw``.
 
     Parameters
@@ -73,6 +73,13 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
     tol : float
         Stop when every entry changes by less than ``tol`` relative to
         ``sqrt(Q_ii Q_jj)``.
+    fast : bool
+        Iterate on compiled small-matrix loops (:mod:`._smallmat`, about 4x faster) instead
+        of numba's BLAS/LAPACK calls: the same iteration, round-off apart (1e-15 relative in
+        one step; where it stops can move by a step, 1e-11 relative in Q). The default keeps
+        the BLAS route, whose bits the written tables were built with: app. H's spectral
+        radius of a stable design is 1 within 1e-8 only (a marginal mode, see
+        :mod:`.robustness`), so a round-off change moves its 9th digit.
     """
     vv = np.atleast_2d(np.asarray(vv, dtype=float))
     if not _symmetric(vv) or np.linalg.eigvalsh(vv).min() <= 0.0:
@@ -82,6 +89,15 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
         raise AbglibValueError("V_w must be symmetric positive semidefinite")
     a = np.ascontiguousarray(a, dtype=float)
     m = np.ascontiguousarray(m, dtype=float)
+    if not fast:
+        qn, ok = _kalman_iterate_blas(
+            a, m, np.ascontiguousarray(vw), np.ascontiguousarray(vv), float(tol), int(max_iter)
+        )
+        if not ok:
+            raise AbglibValueError(
+                f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}"
+            )
+        return qn
     # states the noise never reaches: where Vw's rows are zero and A does not feed them from
     # the others (the antenna block of the extended model, w = 0, sec. 7.3), Q stays exactly
     # zero (Q = 0 there makes every term of eq 7.15 zero there), so the iteration runs on
@@ -106,6 +122,23 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
     if not ok:
         raise AbglibValueError(f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}")
     return qn
+
+
+@njit(cache=True)
+def _kalman_iterate_blas(a, m, vw, vv, tol, max_iter):
+    # the iteration of kalman_riccati, compiled (the same formulas, step by step)
+    q = vw.copy()
+    mt = np.ascontiguousarray(m.T)
+    at = np.ascontiguousarray(a.T)
+    for _ in range(max_iter):
+        s = m @ q @ mt + vv
+        qn = vw + a @ (q - q @ mt @ np.linalg.solve(s, m @ q)) @ at
+        qn = 0.5 * (qn + qn.T)
+        d = np.sqrt(np.maximum(np.diag(qn), 1e-300))
+        if np.max(np.abs(qn - q) / np.outer(d, d)) < tol:
+            return qn, True
+        q = qn
+    return q, False
 
 
 @njit(cache=True)
@@ -168,7 +201,7 @@ class KalmanGains:
     Cf: np.ndarray
 
 
-def kalman_gains(model: ExtendedModel, v_w, v_v) -> KalmanGains:
+def kalman_gains(model: ExtendedModel, v_w, v_v, fast=False) -> KalmanGains:
     """Steady-state predictor gains of the extended model (eqs 7.15, 7.18-7.20).
 
     Parameters
@@ -177,10 +210,12 @@ def kalman_gains(model: ExtendedModel, v_w, v_v) -> KalmanGains:
         Variance of the object-model error (sec. 7.3, 8.2), > 0.
     v_v : array (2, 2)
         Measurement-error covariance (sec. 8.2), positive definite.
+    fast : bool
+        :func:`kalman_riccati`'s compiled loops.
     """
     v_w = float(check_positive("V_w", v_w))
     vw = v_w * model.G @ model.G.T
-    q = kalman_riccati(model.A, model.M, vw, v_v)
+    q = kalman_riccati(model.A, model.M, vw, v_v, fast=fast)
     vv = np.atleast_2d(np.asarray(v_v, dtype=float))
     s = model.M @ q @ model.M.T + vv
     kf = model.A @ q @ model.M.T @ np.linalg.inv(s)  # eq 7.19 (matrix inversion lemma)

@@ -134,10 +134,10 @@ def riccati_solve(a, b, qx, r, tol=1e-13, max_iter=200000):
     Lyapunov equation by its Kronecker system as scipy's ``direct`` method.
 
     The result is the same fixed point to round-off (1e-15 relative, not the same bits: no
-    BLAS/LAPACK kernel). Used where the design feeds only rounded numbers (app. H's spectral
-    radii, 9 digits; the quantised loop, whose inputs :func:`.ensemble.snap` rounds to 32
-    bits). The exact tables (tracking, omega sweep) keep :func:`riccati_iterate`: they write
-    u to 10 digits, and a few of them lie within 1e-15 of a rounding boundary.
+    BLAS/LAPACK kernel), so it is not the default: the exact tables (tracking, omega sweep)
+    write u to 10 digits and a few lie within 1e-15 of a rounding boundary, and app. H's
+    spectral radius of a stable design moves by 1e-8 (:func:`.robustness.spectral_radius`).
+    ``design_controller(..., fast=True)`` uses it.
     """
     a, b, qx = (np.ascontiguousarray(x, dtype=float) for x in (a, b, qx))
     r = np.ascontiguousarray(np.atleast_2d(np.asarray(r, dtype=float)))

@@ -53,8 +53,7 @@ def design_error_rows(s, name) -> list[dict]:
     n = int(np.ceil(float(rb["duration"]) / s.dt))
     rows = []
     for row in radius_rows(s, name):
-        # the design of the radius (snapped into the quantised loop, :mod:`.ensemble`)
-        ctrl = design_controller(s.params.scaled(name, row["factor"]), s.dt, s.q, s.r, True)
+        ctrl = design_controller(s.params.scaled(name, row["factor"]), s.dt, s.q, s.r)
         st = run_stats(
             s.params,
             ctrl,
