@@ -216,11 +216,46 @@ def test_time_major_kalman_loop_equals_the_phase_loop_bit_for_bit(ctrl, order, v
     finally:
         ensemble._kalman_loop = real
     (args,) = calls
+    assert args[-1] is True  # the zeros of A - Kf M are skipped
     outs = []
-    for loop in (ensemble._kalman_loop, ensemble._kalman_loop_by_phase):
-        y, u, err = (np.full_like(a, 7.0) for a in args[-3:])
-        loop(*args[:-3], y, u, err)
+    for skip in (True, False, None):
+        y, u, err = (np.full_like(a, 7.0) for a in args[-4:-1])
+        if skip is None:
+            ensemble._kalman_loop_by_phase(*args[:-4], y, u, err)
+        else:
+            assert ensemble._kalman_loop(*args[:-4], y, u, err, skip)
         outs.append((y, u, err))
-    for a, b in zip(*outs, strict=True):
-        assert a.tobytes() == b.tobytes()
+    for o in outs[1:]:
+        for a, b in zip(outs[0], o, strict=True):
+            assert a.tobytes() == b.tobytes()
     assert np.unique(np.round(outs[0][0] / 0.1)).size > 10  # the run moved
+
+
+def test_kalman_loop_skipping_zeros_falls_back_where_a_run_diverges(ctrl):
+    """A design with p_a halved diverges (app. H, spectral radius 10): the state overflows,
+    and the loop that skips the zeros of A - Kf M reports it (0 * inf = nan would have
+    entered); the ensemble then equals the dense reference loop bit for bit, nan and inf
+    included."""
+    from abglib.replications.antenna import ensemble
+
+    bad = design_controller(NOMINAL.scaled("p_a", 0.5), DT, 100.0, 1.0)
+    kw = dict(amplitude=10.0, omega=0.1, n_steps=1600, mode="kalman", order=5, v_w=5e-8,
+              v_v=VV, resolution=0.1, phases=ensemble.phase_grid(3))  # fmt: skip
+    calls = []
+    real = ensemble._kalman_loop
+
+    def spy(*args):
+        calls.append(args)
+        return real(*args)
+
+    ensemble._kalman_loop = spy
+    try:
+        r = ensemble.simulate_phases(NOMINAL, bad, **kw)
+    finally:
+        ensemble._kalman_loop = real
+    assert [c[-1] for c in calls] == [True, False]  # skipped, diverged, rerun dense
+    assert not np.isfinite(r["y"][:, -1]).any()
+    y, u, err = (np.full_like(a, 7.0) for a in calls[0][-4:-1])
+    ensemble._kalman_loop_by_phase(*calls[0][:-4], y, u, err)
+    for a, b in zip((y, u, err), (r["y"], r["u"], r["xt_err"]), strict=True):
+        assert a.tobytes() == b.tobytes()

@@ -35,7 +35,7 @@ from ...analysis._statespace import state_space
 from ...gains import Gains
 from .discretize import zoh
 from .kalman import extended_model, kalman_gains
-from .lq import TrackerMatrices, tracker_matrices
+from .lq import TrackerMatrices, riccati_solve, tracker_matrices
 from .model import AntennaParams, continuous_model
 from .objectmodel import sine_state, taylor_model
 from .preview import preview_gain, sine_model
@@ -78,15 +78,25 @@ class Controller:
     C: np.ndarray
 
 
-def design_controller(params: AntennaParams, dt: float, q: float, r: float) -> Controller:
-    """LQ tracker of the antenna with scalar weights ``Q``, ``R`` (ch. 2, 6), memoised."""
-    return _design_controller(params, float(check_positive("dt", dt)), float(q), float(r))
+def design_controller(
+    params: AntennaParams, dt: float, q: float, r: float, fast: bool = False
+) -> Controller:
+    """LQ tracker of the antenna with scalar weights ``Q``, ``R`` (ch. 2, 6), memoised.
+
+    ``fast``: solve eq 2.12 with :func:`.lq.riccati_solve` (compiled loops, the same fixed
+    point to round-off) instead of :func:`.lq.riccati_iterate`.
+    """
+    return _design_controller(
+        params, float(check_positive("dt", dt)), float(q), float(r), bool(fast)
+    )
 
 
 @lru_cache(maxsize=1024)
-def _design_controller(params: AntennaParams, dt: float, q: float, r: float) -> Controller:
+def _design_controller(
+    params: AntennaParams, dt: float, q: float, r: float, fast: bool
+) -> Controller:
     a, b, c = discrete_plant(params, dt)
-    tm = tracker_matrices(a, b, c, [[q]], [[r]])
+    tm = tracker_matrices(a, b, c, [[q]], [[r]], solver=riccati_solve if fast else None)
     return Controller(params=params, dt=dt, tm=tm, A=a, B=b, C=c)
 
 
@@ -147,17 +157,20 @@ def kalman_object_enbw(gains_kf, model, dt: float) -> float:
     return float((ll.T @ w @ ll)[0, 0] / (2.0 * dt))
 
 
-def closed_loop_matrix(true_params: AntennaParams, ctrl: Controller, order: int, v_w, v_v):
+def closed_loop_matrix(
+    true_params: AntennaParams, ctrl: Controller, order: int, v_w, v_v, fast=False
+):
     """Linear closed-loop map of ``[x, xhat]`` (object motion as input), app. H.
 
     Plant with ``true_params``, controller and Kalman filter designed with ``ctrl.params``;
     quantisation left out. The system is stable when the spectral radius is < 1 (up to the
     marginal modes that the exact antenna model leaves unexcited, see the report).
+    ``fast``: :func:`.kalman.kalman_gains`'s compiled loops.
     """
     a, b, c = discrete_plant(true_params, ctrl.dt)
     at, ct, gt = taylor_model(order, ctrl.dt)
     em = extended_model(ctrl.A, ctrl.B, ctrl.C, at, ct, gt)
-    kg = kalman_gains(em, v_w, v_v)
+    kg = kalman_gains(em, v_w, v_v, fast=fast)
     kt = preview_gain(ctrl.tm, at, ct)
     n = a.shape[0]
     ne = em.A.shape[0]

@@ -21,10 +21,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg
 from numba import njit
 
 from ..._checks import AbglibValueError, check_positive
+from ._smallmat import gauss_solve, matmul, matmul_nt
 
 __all__ = ["ExtendedModel", "KalmanGains", "extended_model", "kalman_gains", "kalman_riccati"]
 
@@ -47,7 +47,9 @@ def extended_model(a, b, c, at, ct, gt) -> ExtendedModel:
     tracking error ``c x - ct x_t``.
     """
     n, p = a.shape[0], at.shape[0]
-    ae = scipy.linalg.block_diag(a, at)
+    ae = np.zeros((n + p, n + p))  # diag(A, At); scipy.linalg.block_diag, without its overhead
+    ae[:n, :n] = a
+    ae[n:, n:] = at
     be = np.vstack([b, np.zeros((p, b.shape[1]))])
     m = np.zeros((2, n + p))
     m[0, 1] = 1.0
@@ -57,7 +59,12 @@ def extended_model(a, b, c, at, ct, gt) -> ExtendedModel:
     return ExtendedModel(A=ae, B=be, M=m, G=g, n_antenna=n)
 
 
-def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
+def _symmetric(x) -> bool:
+    # np.allclose(x, x.T) with its default tolerances, without its overhead
+    return bool(np.all(np.abs(x - x.T) <= 1e-8 + 1e-5 * np.abs(x.T)))
+
+
+def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000, fast=False):
     """Solve eq 7.15 by iterating it from ``Q = Vw``.
 
     Parameters
@@ -66,30 +73,59 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000):
     tol : float
         Stop when every entry changes by less than ``tol`` relative to
         ``sqrt(Q_ii Q_jj)``.
+    fast : bool
+        Iterate on compiled small-matrix loops (:mod:`._smallmat`, about 4x faster) instead
+        of numba's BLAS/LAPACK calls: the same iteration, round-off apart (1e-15 relative in
+        one step; where it stops can move by a step, 1e-11 relative in Q). The default keeps
+        the BLAS route, whose bits the written tables were built with: app. H's spectral
+        radius of a stable design is 1 within 1e-8 only (a marginal mode, see
+        :mod:`.robustness`), so a round-off change moves its 9th digit.
     """
     vv = np.atleast_2d(np.asarray(vv, dtype=float))
-    if not np.allclose(vv, vv.T) or np.linalg.eigvalsh(vv).min() <= 0.0:
+    if not _symmetric(vv) or np.linalg.eigvalsh(vv).min() <= 0.0:
         raise AbglibValueError(f"V_v must be symmetric positive definite, got {vv.tolist()}")
     vw = np.asarray(vw, dtype=float)
-    if not np.allclose(vw, vw.T) or np.linalg.eigvalsh(vw).min() < -1e-15 * max(
-        1.0, np.abs(vw).max()
-    ):
+    if not _symmetric(vw) or np.linalg.eigvalsh(vw).min() < -1e-15 * max(1.0, np.abs(vw).max()):
         raise AbglibValueError("V_w must be symmetric positive semidefinite")
-    qn, ok = _kalman_iterate(
-        np.ascontiguousarray(a, dtype=float),
-        np.ascontiguousarray(m, dtype=float),
-        np.ascontiguousarray(vw),
-        np.ascontiguousarray(vv),
-        float(tol),
-        int(max_iter),
-    )
+    a = np.ascontiguousarray(a, dtype=float)
+    m = np.ascontiguousarray(m, dtype=float)
+    if not fast:
+        qn, ok = _kalman_iterate_blas(
+            a, m, np.ascontiguousarray(vw), np.ascontiguousarray(vv), float(tol), int(max_iter)
+        )
+        if not ok:
+            raise AbglibValueError(
+                f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}"
+            )
+        return qn
+    # states the noise never reaches: where Vw's rows are zero and A does not feed them from
+    # the others (the antenna block of the extended model, w = 0, sec. 7.3), Q stays exactly
+    # zero (Q = 0 there makes every term of eq 7.15 zero there), so the iteration runs on
+    # the rest alone; the skipped terms are exact zeros, the result is the same
+    reached = np.any(vw != 0.0, axis=0) | np.any(vw != 0.0, axis=1)
+    live = np.flatnonzero(reached)
+    if 0 < live.size < len(reached) and not np.any(a[~reached][:, reached]):
+        ql, ok = _kalman_iterate(
+            np.ascontiguousarray(a[np.ix_(live, live)]),
+            np.ascontiguousarray(m[:, live]),
+            np.ascontiguousarray(vw[np.ix_(live, live)]),
+            np.ascontiguousarray(vv),
+            float(tol),
+            int(max_iter),
+        )
+        qn = np.zeros_like(vw)
+        qn[np.ix_(live, live)] = ql
+    else:
+        qn, ok = _kalman_iterate(
+            a, m, np.ascontiguousarray(vw), np.ascontiguousarray(vv), float(tol), int(max_iter)
+        )
     if not ok:
         raise AbglibValueError(f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}")
     return qn
 
 
 @njit(cache=True)
-def _kalman_iterate(a, m, vw, vv, tol, max_iter):
+def _kalman_iterate_blas(a, m, vw, vv, tol, max_iter):
     # the iteration of kalman_riccati, compiled (the same formulas, step by step)
     q = vw.copy()
     mt = np.ascontiguousarray(m.T)
@@ -105,6 +141,56 @@ def _kalman_iterate(a, m, vw, vv, tol, max_iter):
     return q, False
 
 
+@njit(cache=True)
+def _kalman_iterate(a, m, vw, vv, tol, max_iter):
+    # the iteration of kalman_riccati, compiled: Q <- Vw + A (Q - Q M^T S^-1 M Q) A^T with
+    # S = M Q M^T + Vv (eq 7.15 by the matrix inversion lemma), written out on preallocated
+    # buffers (_smallmat; A is block diagonal, eq 7.30, and its zeros are skipped)
+    n = a.shape[0]
+    k = m.shape[0]
+    q = vw.copy()
+    qn = np.empty((n, n))
+    qmt = np.empty((n, k))
+    s = np.empty((k, k))
+    g = np.empty((k, n))
+    t = np.empty((n, n))
+    u = np.empty((n, n))
+    d = np.empty(n)
+    for _ in range(max_iter):
+        matmul_nt(q, m, qmt)  # Q M^T
+        matmul(m, qmt, s)
+        for i in range(k):
+            for j in range(k):
+                s[i, j] += vv[i, j]
+        matmul(m, q, g)  # M Q, then S^-1 M Q
+        if not gauss_solve(s, g):
+            return q, False
+        matmul(qmt, g, t)
+        for i in range(n):
+            for j in range(n):
+                t[i, j] = q[i, j] - t[i, j]
+        matmul(a, t, u)  # A t
+        for i in range(n):  # t = (A t)^T
+            for j in range(n):
+                t[j, i] = u[i, j]
+        matmul(a, t, u)  # A (A t)^T = (A t A^T)^T
+        for i in range(n):  # Qn = Vw + A t A^T, symmetrised
+            for j in range(i, n):
+                v = 0.5 * ((vw[i, j] + u[j, i]) + (vw[j, i] + u[i, j]))
+                qn[i, j] = v
+                qn[j, i] = v
+        for i in range(n):
+            d[i] = np.sqrt(max(qn[i, i], 1e-300))
+        change = 0.0
+        for i in range(n):
+            for j in range(n):
+                change = max(change, abs(qn[i, j] - q[i, j]) / (d[i] * d[j]))
+        if change < tol:
+            return qn, True
+        q, qn = qn, q
+    return q, False
+
+
 @dataclass(frozen=True)
 class KalmanGains:
     """Q (eq 7.15), Kf, Af, Cf (eqs 7.18-7.20)."""
@@ -115,7 +201,7 @@ class KalmanGains:
     Cf: np.ndarray
 
 
-def kalman_gains(model: ExtendedModel, v_w, v_v) -> KalmanGains:
+def kalman_gains(model: ExtendedModel, v_w, v_v, fast=False) -> KalmanGains:
     """Steady-state predictor gains of the extended model (eqs 7.15, 7.18-7.20).
 
     Parameters
@@ -124,10 +210,12 @@ def kalman_gains(model: ExtendedModel, v_w, v_v) -> KalmanGains:
         Variance of the object-model error (sec. 7.3, 8.2), > 0.
     v_v : array (2, 2)
         Measurement-error covariance (sec. 8.2), positive definite.
+    fast : bool
+        :func:`kalman_riccati`'s compiled loops.
     """
     v_w = float(check_positive("V_w", v_w))
     vw = v_w * model.G @ model.G.T
-    q = kalman_riccati(model.A, model.M, vw, v_v)
+    q = kalman_riccati(model.A, model.M, vw, v_v, fast=fast)
     vv = np.atleast_2d(np.asarray(v_v, dtype=float))
     s = model.M @ q @ model.M.T + vv
     kf = model.A @ q @ model.M.T @ np.linalg.inv(s)  # eq 7.19 (matrix inversion lemma)

@@ -57,7 +57,8 @@ def run_stats(params, ctrl, *, transient, keep=False, **kw) -> RunStats:
     """:func:`.ensemble.simulate_phases` reduced to the per-phase maxima after ``transient``."""
     with np.errstate(over="ignore", invalid="ignore"):
         r = simulate_phases(params, ctrl, **kw)
-        sel = r["t"] >= transient
+        # t is increasing: the steps t >= transient are a tail (a view, not a copy)
+        sel = slice(int(np.searchsorted(r["t"], transient, side="left")), None)
         e = np.max(np.abs(r["e"][:, sel]), axis=1)
         u = np.max(np.abs(r["u"][:, sel]), axis=1)
         est = np.max(np.abs(r["xt_err"][:, :, sel]), axis=2)
