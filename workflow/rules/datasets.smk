@@ -13,6 +13,9 @@ rule dataset:
         "logs/datasets/{scenario}.log",
     wildcard_constraints:
         scenario="|".join(DATASET_SCENARIOS) or "no-scenarios-configured",
+    # in-process jobs first: they run while the warm worker imports (onstart, ~4 s), which
+    # script jobs would only wait for
+    priority: 2
     params:
         code=code_of("abglib.bench.datasets"),
         spec=lambda wildcards: DATASET_SCENARIOS[wildcards.scenario],
