@@ -139,8 +139,10 @@ def tracking_table(params, ctrl, amp, omega, ts) -> pd.DataFrame:
     # y and e = y - z carry an absolute round-off of about 1e-15 (the BLAS kernel's
     # matrix-vector products; 1.1e-15 between the default kernel and Prescott), which is
     # most of the value where y or e is tiny (the start, the zero crossings of e): written
-    # with 5 digits, and as the bound below 1e-10
-    df.attrs["precision"] = {"y": TRACK_PRECISION, "e": TRACK_PRECISION}
+    # with 5 digits, and as the bound below 1e-10. u, a sum of feedback terms much larger
+    # than itself (|u| ~ 1e-3 against |z| = 1), carries ~1e-13 the same way (the default
+    # kernel and Prescott wrote 2 of its ~3000 values differently at 10 digits): so too
+    df.attrs["precision"] = {"y": TRACK_PRECISION, "e": TRACK_PRECISION, "u": TRACK_PRECISION}
     return df
 
 
@@ -178,7 +180,13 @@ def omega_sweep_table(controllers, r: float, sw) -> pd.DataFrame:
     df["phase_e"] = [
         np.nan if sm else wrap_phase(p) for sm, p in zip(small, df["phase_e"], strict=True)
     ]
-    df.attrs["precision"] = {"e_max": f"<{E_ROUNDOFF:g}:4", "phase_e": PHASE_DIGITS}
+    # u_max ~ 1e-3 carries the ~1e-13 absolute round-off of u (tracking_table; 10 digits
+    # differed between the two kernels in one row): U_DIGITS hold
+    df.attrs["precision"] = {
+        "e_max": f"<{E_ROUNDOFF:g}:4",
+        "phase_e": PHASE_DIGITS,
+        "u_max": U_DIGITS,
+    }
     return df
 
 
@@ -186,6 +194,8 @@ def omega_sweep_table(controllers, r: float, sw) -> pd.DataFrame:
 E_ROUNDOFF = 1e-10
 #: Significant digits the phase of e holds (its error is about 1e-14 / e_max rad, < 1e-4).
 PHASE_DIGITS = 4
+#: Significant digits the amplitude of u holds (absolute round-off ~1e-13 at ~1e-3).
+U_DIGITS = 6
 
 
 def wrap_phase(phase: float, digits: int = PHASE_DIGITS) -> float:
