@@ -151,7 +151,7 @@ def test_omega_sweep_precision_and_roundoff_phase():
 
     ctrl = design_controller(NOMINAL, DT, 1e4, 1.0)
     d = omega_sweep_table({1e4: ctrl}, 1.0, {"start": 0.003, "stop": 1.0, "n": 3, "orders": [5]})
-    assert d.attrs["precision"] == {"e_max": f"<{E_ROUNDOFF:g}:4", "phase_e": 4}
+    assert d.attrs["precision"] == {"e_max": f"<{E_ROUNDOFF:g}:4", "phase_e": 4, "u_max": 6}
     small = d["e_max"] < E_ROUNDOFF
     assert small.any() and not small.all()
     assert d.loc[small, "phase_e"].isna().all() and d.loc[~small, "phase_e"].notna().all()
@@ -187,7 +187,11 @@ def test_tracking_table_precision():
 
     ctrl = design_controller(NOMINAL, DT, 100.0, 1.0)
     d = tracking_table(NOMINAL, ctrl, 10.0, 0.1, {"duration": 20.0, "orders": [2]})
-    assert d.attrs["precision"] == {"y": TRACK_PRECISION, "e": TRACK_PRECISION}
+    assert d.attrs["precision"] == {
+        "y": TRACK_PRECISION,
+        "e": TRACK_PRECISION,
+        "u": TRACK_PRECISION,
+    }
     out = format_table(d)
     assert out.loc[0, "y"] == "<1e-10"  # the antenna at rest: below the round-off bound
     assert out.loc[1, "y"] == f"{d.loc[1, 'y']:.5g}" and out.loc[1, "e"] == f"{d.loc[1, 'e']:.5g}"
