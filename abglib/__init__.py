@@ -46,7 +46,7 @@ from ._checks import AbglibValueError
 from .engine import TrackResult, track
 from .gains import Gains
 
-__version__ = "0.3.0"
+__version__ = "0.3.1"
 
 __all__ = ["AbglibValueError", "Gains", "TrackResult", "__version__", "track"]
 
