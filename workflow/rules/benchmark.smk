@@ -22,9 +22,9 @@ rule benchmark_cell:
     wildcard_constraints:
         variant="|".join(map(re.escape, BENCH_VARIANTS)) or "no-variants-configured",
         scenario="|".join(map(re.escape, BENCH_SCENARIOS)) or "no-scenarios-configured",
-    threads: 1
     # in-process, like the datasets: first, while the warm worker imports
     priority: 1
+    threads: 1
     resources:
         mem_mb=bench_mem_mb,
         runtime=30,
