@@ -11,10 +11,9 @@ a few ulps.
 
 from __future__ import annotations
 
-import numpy as np
 from numba import njit
 
-__all__ = ["gauss_solve", "matmul", "matmul_nt", "matmul_tn", "nonzero_rows"]
+__all__ = ["gauss_solve", "matmul", "matmul_nt", "matmul_tn"]
 
 
 @njit(cache=True)
@@ -59,21 +58,6 @@ def matmul_tn(a, b, out):
             if ali != 0.0:
                 for j in range(m):
                     out[i, j] += ali * b[l, j]
-
-
-@njit(cache=True)
-def nonzero_rows(a):
-    """Column indices of the nonzero entries of each row: ``(idx, count)``, for products
-    with a sparse factor (the block-diagonal extended model, eq 7.30)."""
-    n, m = a.shape
-    idx = np.zeros((n, m), dtype=np.int64)
-    cnt = np.zeros(n, dtype=np.int64)
-    for i in range(n):
-        for j in range(m):
-            if a[i, j] != 0.0:
-                idx[i, cnt[i]] = j
-                cnt[i] += 1
-    return idx, cnt
 
 
 @njit(cache=True)

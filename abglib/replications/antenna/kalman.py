@@ -76,10 +76,9 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000, fast=False):
     fast : bool
         Iterate on compiled small-matrix loops (:mod:`._smallmat`, about 4x faster) instead
         of numba's BLAS/LAPACK calls: the same iteration, round-off apart (1e-15 relative in
-        one step; where it stops can move by a step, 1e-11 relative in Q). The default keeps
-        the BLAS route, whose bits the written tables were built with: app. H's spectral
-        radius of a stable design is 1 within 1e-8 only (a marginal mode, see
-        :mod:`.robustness`), so a round-off change moves its 9th digit.
+        one step; where it stops can move by a step, 1e-11 relative in Q). Used where that
+        round-off is below what is written (app. H's spectral radii, the phase ensemble's
+        32-bit filters); the default keeps the BLAS route the exact tables were built with.
     """
     vv = np.atleast_2d(np.asarray(vv, dtype=float))
     if not _symmetric(vv) or np.linalg.eigvalsh(vv).min() <= 0.0:

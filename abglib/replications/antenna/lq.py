@@ -134,10 +134,9 @@ def riccati_solve(a, b, qx, r, tol=1e-13, max_iter=200000):
     Lyapunov equation by its Kronecker system as scipy's ``direct`` method.
 
     The result is the same fixed point to round-off (1e-15 relative, not the same bits: no
-    BLAS/LAPACK kernel), so it is not the default: the exact tables (tracking, omega sweep)
-    write u to 10 digits and a few lie within 1e-15 of a rounding boundary, and app. H's
-    spectral radius of a stable design moves by 1e-8 (:func:`.robustness.spectral_radius`).
-    ``design_controller(..., fast=True)`` uses it.
+    BLAS/LAPACK kernel). ``design_controller(..., fast=True)`` uses it, for app. H's
+    spectral radii (:func:`.robustness.spectral_radius`); the exact tables keep
+    :func:`riccati_iterate`, whose bits they were built with.
     """
     a, b, qx = (np.ascontiguousarray(x, dtype=float) for x in (a, b, qx))
     r = np.ascontiguousarray(np.atleast_2d(np.asarray(r, dtype=float)))

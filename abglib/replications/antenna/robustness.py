@@ -17,23 +17,27 @@ import scipy.optimize
 from .closedloop import closed_loop_matrix, design_controller
 from .model import AntennaParams
 
-__all__ = ["spectral_radius", "stable_interval"]
+__all__ = ["RADIUS_DIGITS", "spectral_radius", "stable_interval"]
 
 
-def spectral_radius(
-    nominal: AntennaParams, name, factor, dt, q, r, order, v_w, v_v, fast=False
-) -> float:
+#: Significant digits of a written closed-loop spectral radius: a stable design's radius
+#: is a double eigenvalue 1 (the marginal mode above), which round-off of ~1e-16 in the
+#: designs moves by ~sqrt(1e-16) = 1e-8, so digits beyond the 7th are noise (the BLAS and
+#: the compiled Riccati routes differ by up to 1.6e-8 there).
+RADIUS_DIGITS = 7
+
+
+def spectral_radius(nominal: AntennaParams, name, factor, dt, q, r, order, v_w, v_v) -> float:
     """Spectral radius of the closed loop with design parameter ``name`` scaled by ``factor``.
 
-    ``fast``: the compiled Riccati solvers (:func:`.lq.riccati_solve`, :func:`.kalman.
-    kalman_riccati` ``fast=True``), about 3x faster. Not the default: a stable design's
-    radius is the marginal mode's 1 computed to ~1e-8 (a double eigenvalue: a round-off
-    change of 1e-16 in the designs moves it by ~sqrt(1e-16)), and the written tables hold
-    the bits of the BLAS route (beta_d x 0.5 of the small config: 1 vs 1.000000006).
+    The designs use the compiled Riccati solvers (:func:`.lq.riccati_solve`,
+    :func:`.kalman.kalman_riccati` ``fast=True``; 3x faster than the BLAS iterations). A
+    stable design's radius is the marginal mode's 1 computed to ~1e-8 by either route, so
+    it holds :data:`RADIUS_DIGITS` digits.
     """
     design = nominal.scaled(name, factor)
-    ctrl = design_controller(design, dt, q, r, fast=fast)
-    big = closed_loop_matrix(nominal, ctrl, order, v_w, v_v, fast=fast)
+    ctrl = design_controller(design, dt, q, r, fast=True)
+    big = closed_loop_matrix(nominal, ctrl, order, v_w, v_v, fast=True)
     return float(np.max(np.abs(np.linalg.eigvals(big))))
 
 

@@ -22,7 +22,7 @@ from .._claims import Study
 from .closedloop import design_controller
 from .ensemble import phase_grid
 from .model import AntennaParams
-from .robustness import spectral_radius
+from .robustness import RADIUS_DIGITS, spectral_radius
 from .study_abg import abg_table
 from .study_apph import APPH_PARAMETERS, design_error_rows, radius_rows, stability_row
 from .study_estimation import (
@@ -41,12 +41,6 @@ from .study_exact import (
     taylor_table,
     tracking_table,
 )
-
-#: Significant digits of a written closed-loop spectral radius: a stable design's radius
-#: is a double eigenvalue 1 (the marginal mode, :mod:`.robustness`), which round-off of
-#: ~1e-16 in the designs moves by ~sqrt(1e-16) = 1e-8, so digits beyond the 7th are noise
-#: (the BLAS and the compiled Riccati routes differ by up to 1.6e-8 there).
-RADIUS_DIGITS = 7
 
 __all__ = ["PARAMETER_BASIS", "AntennaStudy", "TABLES"]
 
@@ -364,12 +358,9 @@ class AntennaStudy(Study):
         """Spectral radius of the loop designed with ``name`` x ``factor`` (memoised)."""
         key = (name, float(factor))
         if key not in self._radii:
-            # the compiled solvers (3x faster): a stable design's radius is the marginal
-            # mode's 1 computed to ~1e-8 either way (spectral_radius), which is why the
-            # tables write it to 7 digits (RADIUS_DIGITS)
             self._radii[key] = spectral_radius(
                 self.params, name, float(factor), self.dt, self.q, self.r, 5,
-                self.vw_filter(self.vw_opt5), self.vv, fast=True,
+                self.vw_filter(self.vw_opt5), self.vv,
             )  # fmt: skip
         return self._radii[key]
 
