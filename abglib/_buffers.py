@@ -24,20 +24,26 @@ import threading
 
 import numpy as np
 
+from ._checks import AbglibValueError
+
 __all__ = [
     "DEFAULT_LIMIT",
+    "LAZY_ZEROS_BYTES",
     "MIN_BYTES",
     "empty",
     "pool_bytes",
     "pool_limit",
     "release",
     "set_pool_limit",
+    "zeros",
 ]
 
 #: Bytes the pool keeps at most, by default (the outputs of one 10^7-sample call, twice).
 DEFAULT_LIMIT = 1 << 30
 #: Outputs smaller than this come from numpy as usual (the allocator recycles them).
 MIN_BYTES = 1 << 22
+#: Zero arrays at least this large are mapped lazily (:func:`zeros`).
+LAZY_ZEROS_BYTES = 1 << 20
 
 _LOCK = threading.RLock()
 _POOL: dict[int, list[mmap.mmap]] = {}
@@ -53,8 +59,6 @@ def _limit_from_env() -> int:
     except ValueError:
         value = -1
     if value < 0:
-        from ._checks import AbglibValueError
-
         raise AbglibValueError(
             f"ABGLIB_POOL_BYTES must be a whole number of bytes >= 0, got {text!r}"
         )
@@ -70,8 +74,6 @@ def pool_limit() -> int:
 
 def set_pool_limit(nbytes: int) -> None:
     """Set the pool's limit (bytes, >= 0; 0 switches recycling off) and trim to it."""
-    from ._checks import AbglibValueError
-
     if isinstance(nbytes, bool) or not isinstance(nbytes, (int, np.integer)) or nbytes < 0:
         raise AbglibValueError(
             f"the pool limit must be a whole number of bytes >= 0, got {nbytes!r}"
@@ -117,16 +119,38 @@ class _Owner(np.ndarray):
             pass
 
 
-def _new_block(nbytes: int):
-    """Fresh private anonymous memory (never shared with a forked child), with huge pages
-    where the system allows them (as numpy asks for its own large arrays)."""
-    raw = mmap.mmap(-1, nbytes, flags=mmap.MAP_PRIVATE | mmap.MAP_ANONYMOUS)
+def _anonymous(nbytes: int) -> mmap.mmap:
+    """Fresh private anonymous memory: zero pages, nothing faulted until touched, and
+    never shared with a forked child (whose writes must not reach the parent's arrays)."""
+    return mmap.mmap(-1, nbytes, flags=mmap.MAP_PRIVATE | mmap.MAP_ANONYMOUS)
+
+
+def _new_block(nbytes: int) -> mmap.mmap:
+    """A block for the pool, with huge pages where the system allows them (as numpy asks
+    for its own large arrays)."""
+    raw = _anonymous(nbytes)
     if hasattr(mmap, "MADV_HUGEPAGE"):
         try:
             raw.madvise(mmap.MADV_HUGEPAGE)
         except OSError:  # pragma: no cover - kernels without transparent huge pages
             pass
     return raw
+
+
+def zeros(shape) -> np.ndarray:
+    """A new writeable float64 array of zeros that costs nothing until it is touched.
+
+    Large ones (>= :data:`LAZY_ZEROS_BYTES`) are mapped straight from the operating
+    system's zero pages: no page is faulted or cleared until it is read or written.
+    ``np.zeros`` gets its memory from ``calloc``, which clears recycled heap memory page by
+    page (an 8 MB array costs ~0.2 ms): an alpha-beta tracker's ``a_smooth``, which nobody
+    may read, paid that on every call. Never pooled (a recycled block is not zero).
+    """
+    shape = tuple(int(s) for s in shape)
+    nbytes = math.prod(shape) * 8
+    if nbytes < LAZY_ZEROS_BYTES:
+        return np.zeros(shape)
+    return np.frombuffer(_anonymous(nbytes), dtype=np.float64).reshape(shape)
 
 
 def empty(shape) -> np.ndarray:

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import functools
 import math
-import mmap
 import threading
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -36,8 +35,6 @@ _POINTS = {"zero": 0, "two_point": 2, "three_point": 3}
 # series the batched kernel advances together (abglib._kernels.LANES, kept here so that
 # importing abglib does not import numba)
 _LANES = 4
-# zero arrays at least this large are mapped lazily (_zeros)
-_LAZY_ZEROS_BYTES = 1 << 20
 # below this many samples (series x n) the batched kernel runs on one thread
 _PARALLEL_SAMPLES = 1 << 16
 # one threaded kernel at a time in a process: numba's workqueue threading layer (the one
@@ -361,7 +358,7 @@ def track(
             buffers[name] = user[name]
         elif name == "a_smooth" and order == 2:
             # an alpha-beta tracker's acceleration stays exactly zero
-            buffers[name] = _zeros(full)
+            buffers[name] = _buffers.zeros(full)
         else:
             # recycled memory of earlier outputs when large (abglib._buffers)
             buffers[name] = _buffers.empty(full)
@@ -373,23 +370,6 @@ def track(
     else:
         _run_series(order, operands, full, state0, npoints, buffers)
     return TrackResult(**{k: buffers.get(k) for k in OUTPUTS})
-
-
-def _zeros(shape) -> np.ndarray:
-    """A new writeable float64 array of zeros that costs nothing until it is touched.
-
-    Large ones (>= :data:`_LAZY_ZEROS_BYTES`) are mapped straight from the operating
-    system's zero pages (an anonymous ``mmap`` of their own): no page is faulted or
-    cleared until it is read or written. ``np.zeros`` gets its memory from ``calloc``,
-    which clears recycled heap memory page by page (an 8 MB array costs ~0.2 ms), a cost
-    the alpha-beta path paid on every call for an output nobody may read.
-    """
-    size = math.prod(shape) * 8
-    if size < _LAZY_ZEROS_BYTES:
-        return np.zeros(shape)
-    # private: a forked child's writes must not reach the parent's array
-    block = mmap.mmap(-1, size, flags=mmap.MAP_PRIVATE | mmap.MAP_ANONYMOUS)
-    return np.frombuffer(block, dtype=np.float64).reshape(shape)
 
 
 # --------------------------------------------------------------------------- drivers

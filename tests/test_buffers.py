@@ -100,3 +100,31 @@ def test_track_on_recycled_memory_gives_the_same_numbers():
     third = abglib.track(z, g, dt=0.5)  # from the pool
     for name in abglib.engine.OUTPUTS:
         np.testing.assert_array_equal(getattr(third, name), getattr(first, name))
+
+
+@pytest.mark.parametrize("make", [_buffers.zeros, _buffers.empty])
+def test_large_arrays_are_private_to_a_forked_child(make):
+    """A forked child's writes never reach the parent's array (private mappings: the
+    lazily mapped zeros of alpha-beta's a_smooth, and pooled blocks)."""
+    import os
+
+    a = make(SHAPE)
+    a[...] = 0.0
+    pid = os.fork()
+    if pid == 0:  # the child writes and leaves at once
+        a[...] = 5.0
+        os._exit(0)
+    os.waitpid(pid, 0)
+    assert not np.any(a)
+
+
+def test_zeros_are_zero_and_never_come_from_the_pool():
+    a = _buffers.empty(SHAPE)
+    a[...] = 3.0
+    del a
+    gc.collect()
+    assert _buffers.pool_bytes() > 0
+    z = _buffers.zeros(SHAPE)
+    assert z.shape == SHAPE and z.flags.writeable and not np.any(z)
+    assert _buffers.pool_bytes() > 0  # the pooled block is still there, unused
+    assert _buffers.zeros((3, 4)).shape == (3, 4)  # small: numpy's own
