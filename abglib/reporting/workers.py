@@ -129,7 +129,8 @@ def load_kernels() -> None:
         from ..bench.metrics import evaluate_cell
 
         coord = {"truth_pos": z, "truth_vel": np.ones_like(z), "z": z + 0.5, "sigma": 1.0}
-        evaluate_cell({"x": coord}, 1.0, gains=g, noise={"model": "white"}, burn_in=2)
+        gains = standard_from_alpha(0.5, order=3)
+        evaluate_cell({"x": coord}, 1.0, gains=gains, noise={"model": "white"}, burn_in=2)
     except Exception:  # noqa: BLE001 - see the docstring
         pass
 

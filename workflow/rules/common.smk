@@ -120,7 +120,7 @@ def run_script(input, output, params, wildcards, threads, resources, log, rulena
     run_in_worker(
         Path(workflow.basedir) / params.script,
         smk,
-        in_worker=not (workflow.remote_exec or workflow.subprocess_exec),
+        in_worker=jobs_run_here(),
     )
 
 
