@@ -290,6 +290,7 @@ def evaluate_cell(
     finite = True
     m = n - burn_in
     fast = _fast_scoring(n - burn_in)
+    score = _score_fast if fast else _score_numpy
     scratch: dict = {}
     with np.errstate(over="ignore", invalid="ignore"):
         for lo in range(0, runs, int(chunk_runs)):
@@ -305,7 +306,6 @@ def evaluate_cell(
                 sigma = float(check_positive("sigma", d["sigma"]))
                 res = track(z, gains, dt, init=init) if linear else runner(z)
                 nres = track(z - truth["x"], gains, dt, init=init) if linear else None
-                score = _score_fast if fast else _score_numpy
                 for o in OUTPUTS:
                     r = score(
                         res,

@@ -39,6 +39,7 @@ import math
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -251,14 +252,14 @@ class Study:
         """The document's own config section."""
         return self.config[self.doc]
 
+    @cached_property
+    def _printed_by_key(self) -> dict:
+        # claims ask for thousands of keys: the published table indexed once per study
+        return dict(zip(self.published["key"], self.published["published"], strict=True))
+
     def printed(self, key: str) -> str:
         """The printed string of one published key."""
-        # claims ask for thousands of keys: index the published table once per study
-        pub = self.__dict__.get("_printed_by_key")
-        if pub is None:
-            pub = self.__dict__["_printed_by_key"] = dict(
-                zip(self.published["key"], self.published["published"], strict=True)
-            )
+        pub = self._printed_by_key
         if key not in pub:
             raise AbglibValueError(f"{self.doc}: no published key {key!r}")
         return pub[key]

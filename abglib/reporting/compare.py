@@ -227,6 +227,25 @@ def read_table(path, **kwargs) -> pd.DataFrame:
     return df
 
 
+def _declared_precision(df: pd.DataFrame, precision) -> dict:
+    """``precision`` (default ``df.attrs["precision"]``), checked against the columns."""
+    precision = dict(df.attrs.get("precision", {}) if precision is None else precision)
+    unknown = sorted(set(precision) - set(df.columns))
+    if unknown:
+        raise AbglibValueError(f"precision declared for columns the table lacks: {unknown}")
+    return precision
+
+
+def _is_formatted(dtype) -> bool:
+    """Whether a column of ``dtype`` is written through :func:`format_cell` (floats and
+    objects; other columns as pandas writes them)."""
+    return pd.api.types.is_float_dtype(dtype) or (isinstance(dtype, np.dtype) and dtype.kind == "O")
+
+
+def _formatted(values, spec) -> list[str]:
+    return [v if isinstance(v, str) else format_cell(v, spec) for v in values]
+
+
 def format_table(
     df: pd.DataFrame, digits: int = SIGNIFICANT_DIGITS, precision=None
 ) -> pd.DataFrame:
@@ -236,28 +255,23 @@ def format_table(
     precision (:func:`format_cell`): the digits it is reproducible to. Other columns get
     ``digits`` significant digits.
     """
-    precision = dict(df.attrs.get("precision", {}) if precision is None else precision)
-    unknown = sorted(set(precision) - set(df.columns))
-    if unknown:
-        raise AbglibValueError(f"precision declared for columns the table lacks: {unknown}")
+    precision = _declared_precision(df, precision)
     out = df.copy()
     for col in out.columns:
-        spec = precision.get(col, digits)
-        if pd.api.types.is_float_dtype(out[col]) or out[col].dtype == object:
-            out[col] = [format_cell(v, spec) if not isinstance(v, str) else v for v in out[col]]
+        if _is_formatted(out[col].dtype):
+            out[col] = _formatted(out[col], precision.get(col, digits))
     return out
 
 
 def _column_text(col: pd.Series, spec) -> list[str] | None:
     """A column as ``to_csv`` writes it after :func:`format_table`, or None for a dtype
-    this fast route does not cover (the caller then takes pandas' route)."""
+    this route does not cover (nullable integers, categories, dates...)."""
     dtype = col.dtype
-    numpy_dtype = isinstance(dtype, np.dtype)
-    if pd.api.types.is_float_dtype(dtype) or (numpy_dtype and dtype.kind == "O"):
-        return [v if isinstance(v, str) else format_cell(v, spec) for v in col.tolist()]
-    if numpy_dtype and dtype.kind == "b":
+    if _is_formatted(dtype):
+        return _formatted(col.tolist(), spec)
+    if isinstance(dtype, np.dtype) and dtype.kind == "b":
         return ["True" if v else "False" for v in col.tolist()]
-    if numpy_dtype and dtype.kind in "iu":
+    if isinstance(dtype, np.dtype) and dtype.kind in "iu":
         return [str(v) for v in col.tolist()]
     if pd.api.types.is_string_dtype(dtype):
         return ["" if v is None or v is pd.NA or v != v else str(v) for v in col.tolist()]
@@ -269,27 +283,20 @@ def csv_text(df: pd.DataFrame, digits: int = SIGNIFICANT_DIGITS, precision=None)
 
     Written row by row with :mod:`csv` (the writer ``to_csv`` itself uses, same quoting)
     from the formatted columns, which for a small table is ~20x cheaper than building the
-    formatted frame; a table with a column of another dtype (dates, categories, nullable
-    integers) or with multi-level columns takes pandas' route. Both give the same bytes
-    (``tests/test_compare.py``).
+    formatted frame; a table with a column of another dtype or with multi-level columns
+    takes pandas' route. Both give the same bytes (``tests/test_compare.py``).
     """
     import csv
     import io
 
-    precision = dict(df.attrs.get("precision", {}) if precision is None else precision)
-    unknown = sorted(set(precision) - set(df.columns))
-    if unknown:
-        raise AbglibValueError(f"precision declared for columns the table lacks: {unknown}")
-    columns = []
-    if isinstance(df.columns, pd.MultiIndex) or df.shape[1] == 0:
-        columns = None
-    else:
-        for i, name in enumerate(df.columns):
-            text = _column_text(df.iloc[:, i], precision.get(name, digits))
-            if text is None:
-                columns = None
-                break
-            columns.append(text)
+    precision = _declared_precision(df, precision)
+    columns = None
+    if not isinstance(df.columns, pd.MultiIndex) and df.shape[1] > 0:
+        columns = [
+            _column_text(df.iloc[:, i], precision.get(c, digits)) for i, c in enumerate(df.columns)
+        ]
+        if any(text is None for text in columns):
+            columns = None
     if columns is None:
         return format_table(df, digits, precision).to_csv(index=False, lineterminator="\n")
     buf = io.StringIO()
