@@ -346,54 +346,29 @@ def m5(z, alphas, dt=1.0, causal=False, memory=1) -> MethodResult:
     grid = _grid("alphas", alphas, 0.0, 1.0)
     if isinstance(memory, bool) or not isinstance(memory, (int, np.integer)) or memory < 1:
         raise AbglibValueError(f"memory must be an integer >= 1, got {memory!r}")
-    bb = benedict_bordner(grid)
+    shape = (grid.size,) + (1,) * z.ndim
+    bank = _pred(z, benedict_bordner(grid.reshape(shape)), dt)  # (K, ..., n), abglib.track
     zb = np.ascontiguousarray(z.reshape(-1, z.shape[-1]))
     xp, choice = np.empty(zb.shape), np.empty(zb.shape, dtype=np.intp)
-    # beta / T once per tracker, as abglib.track's batched kernel computes it
-    alphas = np.ascontiguousarray(bb.alpha, dtype=float)
-    b_over_t = np.ascontiguousarray(bb.beta / dt, dtype=float)
-    _m5_kernel()(zb, alphas, b_over_t, dt, bool(causal), int(memory), xp, choice)
+    bank = np.ascontiguousarray(bank.reshape((grid.size,) + zb.shape))
+    _m5_kernel()(zb, bank, bool(causal), int(memory), xp, choice)
     xp, choice = xp.reshape(z.shape), choice.reshape(z.shape)
     return MethodResult(xp, choice)
 
 
-def _m5_run(z, alphas, b_over_t, dt, causal, memory, xp, choice):  # pragma: no cover (numba)
-    """M5 over each row of ``z`` ``(b, n)``: the K fixed-gain trackers of the bank and the
-    choice among them in one pass, written into ``xp`` and ``choice``.
-
-    Each tracker is :func:`abglib.track`'s recursion with the two-point start (seed 001,
-    eqs 9-10, then eqs 3, 6, 8: ``x_p = x + T v``, ``r = z - x_p``, ``x = x_p + alpha r``,
-    ``v = v + (beta/T) r``), the same operations in the same order, so its predictions are
-    the bits ``track`` gives (tested against it). The score is that of the array form
-    this replaced: ``|z - x_p|``, or its sum over the previous ``memory`` steps as a
-    difference of running sums (causal); ``argmin`` as numpy's (first NaN, else first
-    minimum). Running the bank here, not through ``track``, spares the ``(K, b, n)`` bank
-    array and a second pass over it.
-    """
-    nb, n = z.shape
-    k_n = alphas.size
-    x, v, pred, err = np.empty(k_n), np.empty(k_n), np.empty(k_n), np.empty(k_n)
+def _m5_select(z, bank, causal, memory, xp, choice):  # pragma: no cover (numba)
+    """M5's choice over the bank ``(K, b, n)`` (the trackers' predictions, from
+    :func:`abglib.track`) for each row of ``z`` ``(b, n)``: the score of the array form it
+    replaced (``|z - x_pred|``, or its sum over the previous ``memory`` steps as a
+    difference of running sums, causal), ``argmin`` as numpy's (first NaN, else first
+    minimum)."""
+    k_n, nb, n = bank.shape
     csum = np.zeros((n + 1, k_n))  # row i: the trackers' |innovation| summed before sample i
-    score = np.empty(k_n)
+    err, score = np.empty(k_n), np.empty(k_n)
     for b in range(nb):
-        # state after the two initialisation samples (their predictions are the samples)
-        v1 = (z[b, 1] - z[b, 0]) / dt
-        for q in range(k_n):
-            x[q], v[q] = z[b, 1], v1
         for i in range(n):
-            zi = z[b, i]
-            if i < 2:
-                for q in range(k_n):
-                    pred[q] = zi
-                    err[q] = abs(zi - zi)
-            else:
-                for q in range(k_n):
-                    p = x[q] + dt * v[q]
-                    r = zi - p
-                    x[q] = p + alphas[q] * r
-                    v[q] = v[q] + b_over_t[q] * r
-                    pred[q] = p
-                    err[q] = abs(zi - p)
+            for q in range(k_n):
+                err[q] = abs(z[b, i] - bank[q, b, i])
             if causal:
                 lo = max(i - memory, 0)
                 for q in range(k_n):
@@ -412,15 +387,15 @@ def _m5_run(z, alphas, b_over_t, dt, causal, memory, xp, choice):  # pragma: no 
                     best = q
                     break
             choice[b, i] = best
-            xp[b, i] = pred[best]
+            xp[b, i] = bank[best, b, i]
 
 
 @functools.cache
 def _m5_kernel():
-    """:func:`_m5_run` compiled by numba on first use (cached on disk, GIL released)."""
+    """:func:`_m5_select` compiled by numba on first use (cached on disk, GIL released)."""
     from numba import njit
 
-    return njit(cache=True, nogil=True)(_m5_run)
+    return njit(cache=True, nogil=True)(_m5_select)
 
 
 # --------------------------------------------------------------------------- metrics
