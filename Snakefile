@@ -26,9 +26,11 @@ rule all:
 
 onstart:
     # a local build with jobs to run (never a dry run or a no-op): the warm worker starts
-    # its imports now, while the in-process jobs and the scheduler get going
+    # its imports now, while the in-process jobs and the scheduler get going; the
+    # scheduler wakes only when a job ends (common.smk, without_rate_limit)
     if jobs_run_here():
         warm_up()
+        without_rate_limit()
 
 
 onsuccess:

@@ -118,3 +118,42 @@ def test_small_config_declares_the_same_plausible_ranges():
             for k, v in small[doc].get("plausible", {}).items()
         }
         assert got == ranges, doc
+
+
+def test_read_yaml_gives_what_safe_load_gives():
+    from abglib.reporting.pipeline import read_yaml
+
+    for path in (REPO / "config.yaml", SCHEMA, REPO / "tests" / "data" / "config_small.yaml"):
+        assert read_yaml(path) == yaml.safe_load(path.read_text(encoding="utf-8"))
+
+
+def test_validate_config_fills_the_defaults_snakemake_validate_fills():
+    # the Snakefile's check (validate_config) against Snakemake's own (snakemake.utils.validate)
+    from snakemake.utils import validate
+
+    from abglib.reporting.pipeline import validate_config
+
+    cfg = copy.deepcopy(CONFIG)
+    curves = cfg["steelman1978"]["figures"]["fig1"]["curves"]
+    for c in curves:
+        c.pop("scale", None)
+    ours, theirs = copy.deepcopy(cfg), copy.deepcopy(cfg)
+    validate_config(ours, SCHEMA)
+    validate(theirs, schema=str(SCHEMA))
+    assert ours == theirs
+    assert all(c["scale"] == 1.0 for c in ours["steelman1978"]["figures"]["fig1"]["curves"])
+    assert ours != cfg  # the defaults were written in
+
+
+def test_validate_config_names_every_bad_key():
+    from abglib import AbglibValueError
+    from abglib.reporting.pipeline import validate_config
+
+    cfg = _with(["significant_digits"], "six")
+    cfg["figure_dpi"] = -3
+    with pytest.raises(AbglibValueError) as err:
+        validate_config(cfg, SCHEMA)
+    text = str(err.value)
+    assert "config.schema.yaml" in text
+    assert "config key 'significant_digits'" in text
+    assert "config key 'figure_dpi'" in text
