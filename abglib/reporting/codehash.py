@@ -122,28 +122,23 @@ def _save_disk_cache() -> None:
         pass  # a cache: never worth failing a build for
 
 
-def _module_file(package_dir: Path, name: str, files: set) -> Path | None:
-    """The file of module ``name`` (dotted, starting with the package's name), or None.
-
-    ``files``: the package's Python files by their path relative to ``package_dir``
-    (:func:`_package_files`), looked up instead of asking the file system."""
-    parts = name.split(".")
-    if parts[0] != package_dir.name:
-        return None
-    rels = [(*parts[1:], "__init__.py")]
-    if len(parts) > 1:
-        rels.append((*parts[1:-1], parts[-1] + ".py"))
-    return next((package_dir.joinpath(*rel) for rel in rels if rel in files), None)
-
-
-def _package_files(package_dir: Path) -> set[tuple[str, ...]]:
-    """Every ``*.py`` file under ``package_dir``, as path parts relative to it (one walk
-    of the tree, instead of two ``stat`` calls per import looked up)."""
-    out = set()
+def _package_modules(package_dir: Path) -> dict[str, Path]:
+    """The file of every module of the package at ``package_dir`` by its dotted name (one
+    walk of the tree, instead of two ``stat`` calls per import looked up); a package
+    ``a.b`` is its ``a/b/__init__.py``, and wins over a module file ``a/b.py``."""
+    package = package_dir.name
+    out: dict[str, Path] = {}
     for dirpath, dirnames, filenames in os.walk(package_dir):
         dirnames[:] = [d for d in dirnames if d != "__pycache__"]
         rel = Path(dirpath).relative_to(package_dir).parts
-        out.update((*rel, f) for f in filenames if f.endswith(".py"))
+        here = Path(dirpath)
+        for f in filenames:
+            if not f.endswith(".py"):
+                continue
+            if f == "__init__.py":
+                out[".".join((package, *rel))] = here / f
+            else:
+                out.setdefault(".".join((package, *rel, f[:-3])), here / f)
     return out
 
 
@@ -151,9 +146,26 @@ def _imports(path: Path, module: str | None, package: str) -> set[str]:
     """Dotted names of every module of ``package`` that ``path`` imports, anywhere in it
     (lazy imports inside functions included), with ``from X import y`` counted both as X
     and as X.y (y may be a submodule)."""
-    is_pkg = path.name == "__init__.py"
+    fingerprint, imports = _parsed(path)
+    return _package_imports(fingerprint, module, package, path.name == "__init__.py", imports)
+
+
+_IMPORTS: dict = {}
+
+
+def _package_imports(fingerprint, module, package, is_pkg, imports) -> set[str]:
+    # memo of _imports by the file's code (its fingerprint) and its place in the package:
+    # the 30-odd closures of a workflow parse share most of their modules
+    key = (fingerprint, module, package, is_pkg)
+    hit = _IMPORTS.get(key)
+    if hit is None:
+        hit = _IMPORTS[key] = frozenset(_resolve_imports(module, package, is_pkg, imports))
+    return hit
+
+
+def _resolve_imports(module, package, is_pkg, imports) -> set[str]:
     names: set[str] = set()
-    for level, mod, imported in _parsed(path)[1]:
+    for level, mod, imported in imports:
         if not imported:  # import x.y
             names.add(mod)
             continue
@@ -186,11 +198,11 @@ def module_closure(sources, package_dir) -> list[Path]:
     """
     root = Path(package_dir).resolve()
     package = root.name
-    files = _package_files(root)
+    modules = _package_modules(root)
     seen: dict[str, Path] = {}
     todo: list[tuple[str | None, Path]] = []
     for src in sources:
-        f = _module_file(root, str(src), files) if isinstance(src, str) and "/" not in src else None
+        f = modules.get(src) if isinstance(src, str) and "/" not in src else None
         if f is not None:
             todo.append((str(src), f))
         elif Path(src).is_file():
@@ -201,16 +213,16 @@ def module_closure(sources, package_dir) -> list[Path]:
             )
     while todo:
         name, path = todo.pop()
+        if name is not None and name in seen:
+            continue
         deps = _imports(path, name, package)
         if name is not None:
-            if name in seen:
-                continue
             seen[name] = path
             # importing a.b.c runs a/__init__ and a/b/__init__ first
             parts = name.split(".")
-            deps |= {".".join(parts[:i]) for i in range(1, len(parts))}
+            deps = deps | {".".join(parts[:i]) for i in range(1, len(parts))}
         for dep in deps:
-            f = _module_file(root, dep, files)
+            f = modules.get(dep)
             if f is not None and dep not in seen:
                 todo.append((dep, f))
     return sorted(set(seen.values()))
