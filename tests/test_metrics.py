@@ -11,6 +11,7 @@ from abglib import AbglibValueError, Gains, analysis, track
 from abglib.analysis._statespace import state_space
 from abglib.bench.benchmark import check_cell, league_table, run_cell, tradeoff_table
 from abglib.bench.metrics import (
+    OUTPUTS,
     VRFMismatchError,
     coloured_vrf,
     evaluate_cell,
@@ -176,6 +177,33 @@ def test_chunks_do_not_change_the_result():
         for k, v in ra.items():
             if isinstance(v, float):
                 assert rb[k] == pytest.approx(v, rel=1e-12), k
+
+
+@pytest.mark.parametrize("gains", [standard_ab(0.6), standard_abg(0.5)], ids=["ab", "abg"])
+@pytest.mark.parametrize("subset", [("x_smooth",), ("v_pred",), ("x_pred", "v_smooth")])
+def test_scoring_some_outputs_gives_the_same_bits(gains, subset):
+    # the trade-off sweep scores x_smooth alone (the tracker computes only that output):
+    # the columns it gets must be those of the full cell, bit for bit
+    runs, n = 6, 300
+    noise = np.random.default_rng(4).normal(size=(runs, n))
+    coords = {
+        **_coords(lambda t: (t**2 / 10, t / 5), runs, n, 0.5, noise, 1.0),
+        "y": _coords(lambda t: (3 * t, 3 + 0 * t), runs, n, 0.5, noise[::-1], 1.0)["x"],
+    }
+    kw = dict(gains=gains, noise={"model": "white"}, burn_in=20)
+    full = evaluate_cell(coords, 0.5, **kw)
+    some = evaluate_cell(coords, 0.5, outputs=subset, **kw)
+    others = [o for o in OUTPUTS if o not in subset]
+    for rf, rs in zip(full, some, strict=True):
+        assert not [k for k in rs if any(k.endswith(o) or f"_{o}_" in k for o in others)]
+        assert rs == {k: rf[k] for k in rs}
+
+
+def test_evaluate_cell_names_bad_outputs():
+    coords = _coords(lambda t: (t, 1 + 0 * t), 2, 10, 1.0, np.zeros((2, 10)), 1.0)
+    for bad in (("x_smooth", "a_pred"), (), ("x_pred", "x_pred")):
+        with pytest.raises(AbglibValueError, match="outputs must be distinct names from"):
+            evaluate_cell(coords, 1.0, gains=standard_ab(0.5), outputs=bad)
 
 
 def test_evaluate_cell_errors():

@@ -83,6 +83,7 @@ def run_cell(
     init: str = "two_point",
     ci_level: float = 0.95,
     chunk_runs: int = 1000,
+    outputs: Sequence[str] = metrics.OUTPUTS,
 ) -> pd.DataFrame:
     """Metrics of one variant on one dataset, one row per coordinate plus ``all``.
 
@@ -95,7 +96,7 @@ def run_cell(
         The variant's config entry (:func:`abglib.variants.variant_rule`).
     variant : str
         Its name.
-    burn_in, init, ci_level, chunk_runs
+    burn_in, init, ci_level, chunk_runs, outputs
         As :func:`abglib.metrics.evaluate_cell`. ``init="three_point"`` needs gamma > 0,
         so alpha-beta variants fall back to ``"two_point"``.
     """
@@ -133,6 +134,7 @@ def run_cell(
         init=init,
         ci_level=ci_level,
         chunk_runs=chunk_runs,
+        outputs=outputs,
     )
     head = {
         "variant": variant,
@@ -278,7 +280,14 @@ def tradeoff_sweep(
             for v in values:
                 spec = {**fam, param: v}
                 try:
-                    cell = run_cell(ds, spec, f"{label} {param}={v}", burn_in=burn_in, init=init)
+                    cell = run_cell(
+                        ds,
+                        spec,
+                        f"{label} {param}={v}",
+                        burn_in=burn_in,
+                        init=init,
+                        outputs=("x_smooth",),
+                    )
                 except AbglibValueError:
                     continue
                 rec = cell[cell["coord"] == "all"].iloc[0]

@@ -32,8 +32,9 @@ around the exact VRF is a bug, and :class:`VRFMismatchError` is raised.
 
 from __future__ import annotations
 
+import functools
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 import scipy.linalg
@@ -41,6 +42,7 @@ import scipy.linalg
 from .._checks import AbglibValueError, check_in_range, check_positive
 from ..analysis import is_stable, pole_radius, vrf
 from ..analysis._statespace import state_space
+from ..engine import OUTPUTS as TRACK_OUTPUTS
 from ..engine import track
 from ..gains import Gains, require_gains
 
@@ -210,10 +212,17 @@ def _ci(per_run: np.ndarray, level: float) -> tuple[float, float, float, float]:
     """Mean, standard error and the two-sided Student-t CI of per-run estimates."""
     m = float(np.mean(per_run))
     se = float(np.std(per_run, ddof=1) / math.sqrt(per_run.size))
+    q = _t_quantile(0.5 + level / 2.0, per_run.size - 1)
+    return m, se, m - q * se, m + q * se
+
+
+@functools.lru_cache(maxsize=256)
+def _t_quantile(p: float, dof: int) -> float:
+    # scipy.stats.t.ppf costs ~1 ms a call; a build asks for the same few quantiles
+    # (one level, one number of runs) thousands of times
     import scipy.stats
 
-    q = float(scipy.stats.t.ppf(0.5 + level / 2.0, per_run.size - 1))
-    return m, se, m - q * se, m + q * se
+    return float(scipy.stats.t.ppf(p, dof))
 
 
 # --------------------------------------------------------------------------- the cell
@@ -228,6 +237,7 @@ def evaluate_cell(
     init="two_point",
     ci_level: float = 0.95,
     chunk_runs: int = 1000,
+    outputs: Sequence[str] = OUTPUTS,
 ) -> list[dict]:
     """Score a tracker on one scenario over its Monte Carlo runs.
 
@@ -257,6 +267,10 @@ def evaluate_cell(
         Level of the reported confidence interval of the measured VRF.
     chunk_runs : int
         Runs tracked at once (bounds memory for large Monte Carlo sizes).
+    outputs : sequence of str, default all of ``OUTPUTS``
+        The estimates to score (the columns of the others are left out); a fixed-gain
+        tracker computes only the outputs these need. The scores of an output do not
+        depend on which others are scored.
 
     Returns
     -------
@@ -267,6 +281,19 @@ def evaluate_cell(
     """
     if (gains is None) == (runner is None):
         raise AbglibValueError("evaluate_cell needs exactly one of gains and runner")
+    outputs = tuple(outputs)
+    unknown = [o for o in outputs if o not in OUTPUTS]
+    if unknown or not outputs or len(set(outputs)) != len(outputs):
+        raise AbglibValueError(
+            f"outputs must be distinct names from {list(OUTPUTS)}, got {list(outputs)}"
+        )
+    # the tracker outputs each scored estimate is made of (v_pred: eq 2's prediction)
+    needed = {
+        t
+        for o in outputs
+        for t in {"v_pred": ("v_smooth", "a_smooth")}.get(o, (o,))
+    }
+    track_outputs = tuple(t for t in TRACK_OUTPUTS if t in needed)
     names = list(coords)
     if not names:
         raise AbglibValueError("coords must hold at least one coordinate")
@@ -283,10 +310,10 @@ def evaluate_cell(
     n_vrf = max(burn_in, settle)
     vrf_window = theory is not None and n - n_vrf >= 2
     # accumulators per coordinate (and Euclidean over all)
-    acc = {c: {o: {"sq": 0.0, "max": 0.0, "sum": 0.0} for o in OUTPUTS} for c in names}
-    split = {c: {o: {"noise_sq": 0.0, "lag_sq": 0.0} for o in OUTPUTS} for c in names}
-    per_run_vrf = {c: {o: [] for o in OUTPUTS} for c in names}
-    eu = {o: {"sq": 0.0, "max": 0.0} for o in OUTPUTS}
+    acc = {c: {o: {"sq": 0.0, "max": 0.0, "sum": 0.0} for o in outputs} for c in names}
+    split = {c: {o: {"noise_sq": 0.0, "lag_sq": 0.0} for o in outputs} for c in names}
+    per_run_vrf = {c: {o: [] for o in outputs} for c in names}
+    eu = {o: {"sq": 0.0, "max": 0.0} for o in outputs}
     finite = True
     m = n - burn_in
     fast = _fast_scoring(n - burn_in)
@@ -295,7 +322,7 @@ def evaluate_cell(
     with np.errstate(over="ignore", invalid="ignore"):
         for lo in range(0, runs, int(chunk_runs)):
             hi = min(runs, lo + int(chunk_runs))
-            eu_sq = {o: 0.0 for o in OUTPUTS}
+            eu_sq = {o: 0.0 for o in outputs}
             for c in names:
                 d = coords[c]
                 z = np.asarray(d["z"][lo:hi], dtype=float)
@@ -304,9 +331,12 @@ def evaluate_cell(
                     "v": np.asarray(d["truth_vel"][lo:hi], dtype=float),
                 }
                 sigma = float(check_positive("sigma", d["sigma"]))
-                res = track(z, gains, dt, init=init) if linear else runner(z)
-                nres = track(z - truth["x"], gains, dt, init=init) if linear else None
-                for o in OUTPUTS:
+                if linear:
+                    res = track(z, gains, dt, init=init, outputs=track_outputs)
+                    nres = track(z - truth["x"], gains, dt, init=init, outputs=track_outputs)
+                else:
+                    res, nres = runner(z), None
+                for o in outputs:
                     r = score(
                         res,
                         nres,
@@ -334,7 +364,7 @@ def evaluate_cell(
                         split[c][o]["lag_sq"] += lag_sq
                         if vrf_window:
                             per_run_vrf[c][o].append(vrf_runs)
-            for o in OUTPUTS:
+            for o in outputs:
                 if np.ndim(eu_sq[o]) == 0:  # output not provided
                     eu[o]["missing"] = True
                     continue
@@ -354,7 +384,7 @@ def evaluate_cell(
     rows = []
     for c in names:
         row = {"coord": c, "sigma": float(coords[c]["sigma"]), **common}
-        for o in OUTPUTS:
+        for o in outputs:
             a = acc[c][o]
             have = not a.get("missing")
             row[f"rmse_{o}"] = _finite(math.sqrt(a["sq"] / (runs * m))) if have else None
@@ -375,7 +405,7 @@ def evaluate_cell(
                     r[k] = None
         linear = False
     row = {"coord": "all", "sigma": None, **common}
-    for o in OUTPUTS:
+    for o in outputs:
         gone = diverged or eu[o].get("missing", False)
         row[f"rmse_{o}"] = None if gone else _finite(math.sqrt(eu[o]["sq"] / (runs * m)))
         row[f"max_{o}"] = None if gone else _finite(eu[o]["max"])
