@@ -19,10 +19,12 @@ print("to the log", file=sys.stderr)
 if snakemake.params.fail:
     raise ValueError(f"bad value {snakemake.params.value}")
 leaked = hasattr(json, "_abglib_marker")
+import numba
 json._abglib_marker = True  # a module-level change a later job must not see
 with open(snakemake.output.out, "w") as fh:
     json.dump({"pid": os.getpid(), "value": snakemake.params.value,
-               "wildcard": snakemake.wildcards.w, "leaked": leaked, "cwd": os.getcwd()}, fh)
+               "wildcard": snakemake.wildcards.w, "leaked": leaked, "cwd": os.getcwd(),
+               "numba_threads": numba.get_num_threads()}, fh)
 """
 
 
@@ -121,3 +123,26 @@ def test_warm_up_starts_the_fork_server_and_jobs_still_run(tmp_path):
     script.write_text(SCRIPT)
     run_script(script, _job(tmp_path, "w1"))
     assert json.loads((tmp_path / "w1.json").read_text())["pid"] != os.getpid()
+
+
+def test_a_job_keeps_to_its_threads(tmp_path, script):
+    # the job's threads (1 here) bound numba's parallel loops in its worker
+    run_script(script, _job(tmp_path, "a"))
+    assert _read(tmp_path, "a")["numba_threads"] == 1
+
+
+def test_job_threads_sets_and_restores_the_calling_threads_count():
+    import numba
+
+    from abglib import AbglibValueError
+    from abglib.reporting.pipeline import job_threads
+
+    before = numba.get_num_threads()
+    with job_threads(1):
+        assert numba.get_num_threads() == 1
+    assert numba.get_num_threads() == before
+    with job_threads(10_000):  # no more than numba has
+        assert numba.get_num_threads() == numba.config.NUMBA_NUM_THREADS
+    with pytest.raises(AbglibValueError, match="at least 1 thread, got 0"):
+        with job_threads(0):
+            pass

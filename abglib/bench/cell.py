@@ -27,6 +27,7 @@ def cell_job(
     settings: Mapping,
     seed: int,
     digits: int,
+    threads: int = 1,
 ) -> None:
     """Run one cell and write its CSV, or fail leaving no output.
 
@@ -37,15 +38,16 @@ def cell_job(
     which depends only on the config and this cell's runs) and only then writes the CSV.
 
     ``settings`` holds ``runs, burn_in, init, ci_level, chunk_runs, family_size,
-    family_alpha`` (``config['benchmark']``).
+    family_alpha`` (``config['benchmark']``). ``threads``: the job's cores (the rule's
+    ``threads:``), which its tracking keeps to (:func:`abglib.reporting.pipeline.job_threads`).
     """
     from ..reporting.compare import write_csv
-    from ..reporting.pipeline import job_log
+    from ..reporting.pipeline import job_log, job_threads
     from .benchmark import cell_dataset, check_cell, run_cell
     from .metrics import fail_threshold
 
     started = time.perf_counter()
-    with job_log(log, f"benchmark cell {variant}/{scenario}") as logger:
+    with job_threads(threads), job_log(log, f"benchmark cell {variant}/{scenario}") as logger:
         ds = cell_dataset(parquet, scenario, scenario_spec, settings.get("runs"), seed)
         logger.info("%s on %s: %d runs x %d samples", variant, ds.name, ds.runs, ds.n_samples)
         cell = run_cell(

@@ -28,6 +28,7 @@ __all__ = [
     "curve_label",
     "gains_from_spec",
     "job_log",
+    "job_threads",
     "log_to",
     "prepend_pythonpath",
     "read_yaml",
@@ -201,6 +202,31 @@ def log_to(path) -> logging.Logger:
 class JobFailed(RuntimeError):
     """A job run inside Snakemake's own process, or in its worker, failed; the message
     names its log."""
+
+
+@contextlib.contextmanager
+def job_threads(n):
+    """Run the enclosed code on at most ``n`` threads of numba's parallel loops: a job
+    uses the cores Snakemake gave it (the rule's ``threads:``), no more.
+
+    Without it a 1-thread job's batched tracking ran on all of numba's threads (2 here),
+    and two such jobs side by side (two cores) competed for three or four: a job next to
+    one that does slowed by up to 40 %. The count is the calling thread's own (numba's
+    ``set_num_threads``), so it holds for a thread of Snakemake's process (the cells) as
+    for a worker process, and it is put back on exit. Parallel and serial tracking give
+    the same bits (:func:`abglib.track`).
+    """
+    import numba
+
+    n = int(n)
+    if n < 1:
+        raise AbglibValueError(f"a job needs at least 1 thread, got {n}")
+    old = numba.get_num_threads()
+    numba.set_num_threads(min(n, numba.config.NUMBA_NUM_THREADS))
+    try:
+        yield
+    finally:
+        numba.set_num_threads(old)
 
 
 @contextlib.contextmanager

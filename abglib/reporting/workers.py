@@ -158,7 +158,10 @@ def _worker(script, smk, cwd, conn) -> None:
     """Body of the worker process: the script, then its outcome over ``conn``."""
     try:
         os.chdir(cwd)
-        _execute(script, smk)
+        from .pipeline import job_threads
+
+        with job_threads(smk.threads):
+            _execute(script, smk)
     except BaseException as err:  # noqa: BLE001 - every failure must reach the parent
         # the traceback goes where the script sends its stderr (its log, see log_to)
         traceback.print_exc()

@@ -61,6 +61,7 @@ rule benchmark_cell:
             settings=params.settings,
             seed=params.seed,
             digits=params.digits,
+            threads=threads,
         )
 
 
