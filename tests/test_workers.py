@@ -89,8 +89,14 @@ def test_a_failing_script_names_the_error_and_its_log(script, tmp_path, monkeypa
 def test_in_place_runs_here_and_gives_stderr_back(script, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     stderr, hook = sys.stderr, sys.excepthook
+    import numba
+
+    threads = numba.get_num_threads()
     run_script(script, _job(tmp_path, "a"), in_worker=False)
     assert _read(tmp_path, "a")["pid"] == os.getpid()
+    # on a cluster a job keeps to its cpus too, and the process's count comes back
+    assert _read(tmp_path, "a")["numba_threads"] == 1
+    assert numba.get_num_threads() == threads
     assert (sys.stderr, sys.excepthook) == (stderr, hook)
     with pytest.raises(JobFailed, match="ValueError: bad value 1"):
         run_script(script, _job(tmp_path, "b", fail=True), in_worker=False)

@@ -187,9 +187,12 @@ def run_script(script, smk, *, in_worker: bool = True) -> None:
         raise JobFailed(f"no workflow script {script}")
     log = f" (full traceback in {smk.log[0]})" if len(smk.log) else ""
     if not in_worker:
+        from .pipeline import job_threads
+
         saved = sys.stderr, sys.excepthook
         try:
-            _execute(script, smk)
+            with job_threads(smk.threads):  # a cluster job's cpus, not the node's
+                _execute(script, smk)
         except Exception as err:
             traceback.print_exc()
             raise JobFailed(f"{script.name} failed: {type(err).__name__}: {err}{log}") from err
