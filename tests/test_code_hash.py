@@ -41,6 +41,22 @@ def test_closure_follows_relative_lazy_and_parent_imports(tmp_path):
     assert _names(module_closure([str(script)], pkg), pkg) == ["__init__.py", "core.py", "other.py"]
 
 
+def test_a_module_added_or_removed_is_seen_by_the_next_closure(tmp_path):
+    # the package's module index is kept between calls while no directory changes
+    pkg = _package(tmp_path)
+    assert _names(module_closure(["pkg.sub.b"], pkg), pkg)[-1] == "sub/b.py"
+    (pkg / "sub" / "c.py").write_text("x = 2\n")
+    (pkg / "sub" / "b.py").write_text("from . import a, c\n")
+    assert "sub/c.py" in _names(module_closure(["pkg.sub.b"], pkg), pkg)
+    (pkg / "sub" / "deeper").mkdir()
+    (pkg / "sub" / "deeper" / "__init__.py").write_text("")
+    (pkg / "sub" / "b.py").write_text("from . import deeper\n")
+    assert "sub/deeper/__init__.py" in _names(module_closure(["pkg.sub.b"], pkg), pkg)
+    (pkg / "sub" / "deeper" / "__init__.py").unlink()
+    (pkg / "sub" / "deeper").rmdir()
+    assert "sub/deeper/__init__.py" not in _names(module_closure(["pkg.sub.b"], pkg), pkg)
+
+
 def test_docstrings_and_comments_do_not_change_the_hash_code_does(tmp_path):
     pkg = _package(tmp_path)
     h = code_hash("pkg.sub.b", package_dir=pkg)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import functools
 import os
+import time
 from pathlib import Path
 
 from .._checks import AbglibValueError
@@ -122,23 +123,51 @@ def _save_disk_cache() -> None:
         pass  # a cache: never worth failing a build for
 
 
+#: The last module index of each package directory, with its directories' mtimes.
+_INDEX: dict = {}
+
+
 def _package_modules(package_dir: Path) -> dict[str, Path]:
     """The file of every module of the package at ``package_dir`` by its dotted name (one
     walk of the tree, instead of two ``stat`` calls per import looked up); a package
-    ``a.b`` is its ``a/b/__init__.py``, and wins over a module file ``a/b.py``."""
+    ``a.b`` is its ``a/b/__init__.py``, and wins over a module file ``a/b.py``.
+
+    The index is kept while no directory of the tree changes (a file added, removed or
+    renamed changes its directory's mtime; a new directory, its parent's): the 30-odd
+    code hashes of a workflow parse walk the tree once."""
+    hit = _INDEX.get(package_dir)
+    if hit is not None:
+        stamps, modules = hit
+        try:
+            if all(os.stat(d).st_mtime_ns == m for d, m in stamps):
+                return modules
+        except OSError:
+            pass
     package = package_dir.name
     out: dict[str, Path] = {}
-    for dirpath, dirnames, filenames in os.walk(package_dir):
-        dirnames[:] = [d for d in dirnames if d != "__pycache__"]
-        rel = Path(dirpath).relative_to(package_dir).parts
-        here = Path(dirpath)
-        for f in filenames:
-            if not f.endswith(".py"):
-                continue
-            if f == "__init__.py":
-                out[".".join((package, *rel))] = here / f
-            else:
-                out.setdefault(".".join((package, *rel, f[:-3])), here / f)
+    stamps = []
+    todo: list[tuple[str, ...]] = [()]
+    while todo:
+        rel = todo.pop()
+        here = package_dir.joinpath(*rel)
+        # the mtime before the listing: a file added after it changes the mtime again
+        stamps.append((str(here), os.stat(here).st_mtime_ns))
+        with os.scandir(here) as entries:
+            for e in entries:
+                if e.is_dir():
+                    if e.name != "__pycache__":
+                        todo.append((*rel, e.name))
+                elif e.name == "__init__.py":
+                    out[".".join((package, *rel))] = here / e.name
+                elif e.name.endswith(".py"):
+                    out.setdefault(".".join((package, *rel, e.name[:-3])), here / e.name)
+    # a directory changed within the file system's timestamp granularity (coarse on some
+    # kernels) might change again without a new mtime: index it again next time
+    recent = time.time_ns() - 2_000_000_000
+    if all(m < recent for _, m in stamps):
+        _INDEX[package_dir] = (tuple(stamps), out)
+    else:
+        _INDEX.pop(package_dir, None)
     return out
 
 
