@@ -152,3 +152,35 @@ def test_job_threads_sets_and_restores_the_calling_threads_count():
     with pytest.raises(AbglibValueError, match="at least 1 thread, got 0"):
         with job_threads(0):
             pass
+
+
+FIGURE = """
+import sys
+from abglib.reporting import workers
+if sys.argv[2] == "warm":
+    workers.load_figures()
+import matplotlib.pyplot as plt
+from abglib.reporting.plotting import STYLE, describe, save_figure
+assert plt.get_fignums() == []  # the warm-up leaves no figure open
+with plt.rc_context(STYLE):
+    fig, ax = plt.subplots()
+    ax.semilogx([0.01, 0.1, 1.0], [1.0, 0.5, 0.1], label="α = 0.5")
+    ax.set_xlabel("ωT (rad/sample)")
+    ax.legend()
+describe(fig, "a test figure")
+save_figure(fig, sys.argv[1])
+"""
+
+
+def test_warm_figure_caches_change_no_pixel(tmp_path):
+    # the fork server draws one figure first (load_figures); a job's figure must come out
+    # byte for byte as it would in a fresh process
+    import subprocess
+
+    script = tmp_path / "fig.py"
+    script.write_text(FIGURE, encoding="utf-8")
+    for mode in ("cold", "warm"):
+        subprocess.run(
+            [sys.executable, str(script), str(tmp_path / f"{mode}.png"), mode], check=True
+        )
+    assert (tmp_path / "cold.png").read_bytes() == (tmp_path / "warm.png").read_bytes()

@@ -32,7 +32,15 @@ from pathlib import Path
 
 from .pipeline import JobFailed
 
-__all__ = ["PRELOAD", "JobFailed", "load_kernels", "run_script", "script_object", "warm_up"]
+__all__ = [
+    "PRELOAD",
+    "JobFailed",
+    "load_figures",
+    "load_kernels",
+    "run_script",
+    "script_object",
+    "warm_up",
+]
 
 #: Modules the fork server imports once, so that no job pays for them (a module that
 #: fails to import is skipped: the job that needs it will say why).
@@ -66,8 +74,9 @@ PRELOAD = [
     "abglib.reporting.pipeline",
     "abglib.reporting.plotting",
     "abglib.reporting.render",
-    # last: the compiled loops themselves (load_kernels), with everything above in place
-    "abglib.reporting._warm_kernels",
+    # last: the compiled loops themselves and matplotlib's caches (load_kernels,
+    # load_figures), with everything above in place
+    "abglib.reporting._warm_caches",
 ]
 
 _CONTEXT = None
@@ -131,6 +140,33 @@ def load_kernels() -> None:
         coord = {"truth_pos": z, "truth_vel": np.ones_like(z), "z": z + 0.5, "sigma": 1.0}
         gains = standard_from_alpha(0.5, order=3)
         evaluate_cell({"x": coord}, 1.0, gains=gains, noise={"model": "white"}, burn_in=2)
+    except Exception:  # noqa: BLE001 - see the docstring
+        pass
+
+
+def load_figures() -> None:
+    """Fill the caches of matplotlib that every figure job's first figure fills: the
+    project style's fonts and glyphs, mathtext's parser (log-axis tick labels), the log
+    locators and constrained layout, by drawing one small log-log figure under
+    :data:`.plotting.STYLE` on an Agg canvas. A figure job forked from the server then
+    draws its first figure as fast as its later ones (0.3-0.4 s less a job). The caches
+    hold what matplotlib would compute anyway: the same pixels. A failure here is the
+    figure job's to report, not the server's (as :func:`load_kernels`).
+    """
+    try:
+        import matplotlib.pyplot as plt
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+        from .plotting import STYLE
+
+        with plt.rc_context(STYLE):
+            fig, ax = plt.subplots()
+            ax.loglog([1e-2, 1.0], [1e-3, 10.0], label="α-β-γ")
+            ax.set_xlabel("ωT (rad/sample)")
+            ax.set_title("|X̄/X|")
+            ax.legend()
+            FigureCanvasAgg(fig).draw()
+            plt.close(fig)
     except Exception:  # noqa: BLE001 - see the docstring
         pass
 
