@@ -175,26 +175,9 @@ def _imports(path: Path, module: str | None, package: str) -> set[str]:
     """Dotted names of every module of ``package`` that ``path`` imports, anywhere in it
     (lazy imports inside functions included), with ``from X import y`` counted both as X
     and as X.y (y may be a submodule)."""
-    fingerprint, imports = _parsed(path)
-    return _package_imports(fingerprint, module, package, path.name == "__init__.py", imports)
-
-
-_IMPORTS: dict = {}
-
-
-def _package_imports(fingerprint, module, package, is_pkg, imports) -> set[str]:
-    # memo of _imports by the file's code (its fingerprint) and its place in the package:
-    # the 30-odd closures of a workflow parse share most of their modules
-    key = (fingerprint, module, package, is_pkg)
-    hit = _IMPORTS.get(key)
-    if hit is None:
-        hit = _IMPORTS[key] = frozenset(_resolve_imports(module, package, is_pkg, imports))
-    return hit
-
-
-def _resolve_imports(module, package, is_pkg, imports) -> set[str]:
+    is_pkg = path.name == "__init__.py"
     names: set[str] = set()
-    for level, mod, imported in imports:
+    for level, mod, imported in _parsed(path)[1]:
         if not imported:  # import x.y
             names.add(mod)
             continue
