@@ -30,7 +30,7 @@ import threading
 import traceback
 from pathlib import Path
 
-from .pipeline import JobFailed
+from .pipeline import JobFailed, job_threads
 
 __all__ = [
     "PRELOAD",
@@ -186,18 +186,18 @@ def warm_up() -> None:
 
 
 def _execute(script, smk) -> None:
-    """Run ``script`` with ``snakemake`` bound to ``smk``, as Snakemake's preamble does."""
-    runpy.run_path(str(script), init_globals={"snakemake": smk}, run_name="__main__")
+    """Run ``script`` with ``snakemake`` bound to ``smk``, as Snakemake's preamble does,
+    on the job's threads (:func:`.pipeline.job_threads`: a worker's job, or a cluster
+    job's cpus, not the node's)."""
+    with job_threads(smk.threads):
+        runpy.run_path(str(script), init_globals={"snakemake": smk}, run_name="__main__")
 
 
 def _worker(script, smk, cwd, conn) -> None:
     """Body of the worker process: the script, then its outcome over ``conn``."""
     try:
         os.chdir(cwd)
-        from .pipeline import job_threads
-
-        with job_threads(smk.threads):
-            _execute(script, smk)
+        _execute(script, smk)
     except BaseException as err:  # noqa: BLE001 - every failure must reach the parent
         # the traceback goes where the script sends its stderr (its log, see log_to)
         traceback.print_exc()
@@ -223,12 +223,9 @@ def run_script(script, smk, *, in_worker: bool = True) -> None:
         raise JobFailed(f"no workflow script {script}")
     log = f" (full traceback in {smk.log[0]})" if len(smk.log) else ""
     if not in_worker:
-        from .pipeline import job_threads
-
         saved = sys.stderr, sys.excepthook
         try:
-            with job_threads(smk.threads):  # a cluster job's cpus, not the node's
-                _execute(script, smk)
+            _execute(script, smk)
         except Exception as err:
             traceback.print_exc()
             raise JobFailed(f"{script.name} failed: {type(err).__name__}: {err}{log}") from err
