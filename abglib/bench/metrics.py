@@ -60,6 +60,14 @@ __all__ = [
 
 #: Estimates scored against the truth.
 OUTPUTS = ("x_smooth", "x_pred", "v_smooth", "v_pred")
+# the tracker outputs (abglib.track) each scored estimate is made of (v_pred: eq 2's
+# prediction from the smoothed velocity and acceleration, as _estimates computes it)
+_MADE_OF = {
+    "x_smooth": ("x_smooth",),
+    "x_pred": ("x_pred",),
+    "v_smooth": ("v_smooth",),
+    "v_pred": ("v_smooth", "a_smooth"),
+}
 
 
 class VRFMismatchError(RuntimeError):
@@ -287,12 +295,7 @@ def evaluate_cell(
         raise AbglibValueError(
             f"outputs must be distinct names from {list(OUTPUTS)}, got {list(outputs)}"
         )
-    # the tracker outputs each scored estimate is made of (v_pred: eq 2's prediction)
-    needed = {
-        t
-        for o in outputs
-        for t in {"v_pred": ("v_smooth", "a_smooth")}.get(o, (o,))
-    }
+    needed = {t for o in outputs for t in _MADE_OF[o]}
     track_outputs = tuple(t for t in TRACK_OUTPUTS if t in needed)
     names = list(coords)
     if not names:
