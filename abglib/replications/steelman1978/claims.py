@@ -543,3 +543,27 @@ def _summary(s: SteelmanStudy) -> Result:
         f"{t['eq53_rel_err'].max():.1%} of the exact -3 dB ωT, eq 55 within "
         f"{t['eq55_rel_err'].max():.1%} of the exact overshoot; see '{SEC_T345}' and '{SEC_TEXT}'",
     )
+
+
+# ------------------------------------------------------------------ abstract (added in v0.4.0)
+@CLAIMS.claim("claim.abstract_0707", depends_on=(APPROX,))
+def _abstract_0707(s: SteelmanStudy) -> Result:
+    """The abstract: "equations are given for the frequency at which the output is 0.707
+    of the input". The body gives no exact one (before eq 51: it "would require the
+    symbolic solution of a cubic equation"); eq 53 is the only equation for it, so the
+    claim is judged as eq 53 giving the 0.707 frequency, with the tolerance that reads
+    "good"/"reasonable" elsewhere in the text (``judging.approx_rtol``)."""
+    t = s.abstract_0707
+    rtol = float(s.judging["approx_rtol"])
+    return Result(
+        bool(t["rel_err"].max() <= rtol),
+        "no exact equation is given (the text says it needs a cubic); eq 53 (-.15) against the "
+        "ωT where |X̄/X| = 0.707 (Brent on the frequency response): "
+        + ", ".join(
+            f"{w53:.4f} vs {w:.4f} ({e:.2%}) at α = {a:g}"
+            for a, w, w53, e in zip(
+                t["alpha"], t["wT_0707"], t["wT_eq53"], t["rel_err"], strict=True
+            )
+        )
+        + f"; 'given for' read as within {rtol:.0%}, as 'reasonable' for eq 53; see '{SEC_TEXT}'",
+    )

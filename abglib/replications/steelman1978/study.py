@@ -429,6 +429,31 @@ class SteelmanStudy(Study):
             out[a] = float(max(abs(p / x - 1) for p, x in pairs))
         return out
 
+    # ----------------------------------------------------------------- abstract
+    @cached_property
+    def abstract_0707(self) -> pd.DataFrame:
+        """Per table α: the ωT where |X̄/X| = 0.707 (the abstract's level, as printed),
+        found by Brent's method on the frequency response between the passband peak and
+        ωT = π, against eq 53 as printed (exponent -.15), the only equation the report
+        gives for that frequency (seed 000, abstract and eq 53; the text before eq 51 says
+        the exact solution needs a cubic)."""
+        from scipy.optimize import brentq
+
+        level = 0.707
+        e3 = self.cfg["eq53_exponent_3db"]
+        rows = []
+        for a in self.table_alphas:
+            g = self.std(a)
+            lo = float(A.peak(g)[0])
+
+            def gap(w, g=g):
+                return float(abs(A.frequency_response(g, "x_smooth", w))) - level
+
+            w = float(brentq(gap, lo, np.pi, xtol=1e-15, rtol=4 * np.finfo(float).eps))
+            w53 = float(A.omega_3db_eq53(g, e3))
+            rows.append({"alpha": a, "wT_0707": w, "wT_eq53": w53, "rel_err": abs(w53 / w - 1)})
+        return pd.DataFrame(rows)
+
     # ----------------------------------------------------------------- report tables
     def tables(self) -> dict[str, pd.DataFrame]:
         return {
