@@ -46,12 +46,9 @@ import numpy as np
 import pandas as pd
 
 from .._checks import AbglibValueError
-from ..reporting.compare import (
-    COMPARISON_COLUMNS,
-    Alternative,
-    format_number,
-    judge,
-)
+from ..reporting.compare import COMPARISON_COLUMNS, SENTENCE_COLUMN
+from ..verdicts import Alternative, Reading, format_number
+from ..verdicts._judge import _assess, judge_sentences
 
 __all__ = [
     "ROBUSTNESS_COLUMNS",
@@ -73,20 +70,6 @@ ROBUSTNESS_COLUMNS = ["key", "input", "value", "nominal", "reproduced", "verdict
 
 # --------------------------------------------------------------------------- results
 @dataclass(frozen=True)
-class Reading:
-    """An alternative reading of a printed number, computed by abglib.
-
-    ``description`` says what is computed instead (it goes into the note), ``value`` is
-    its value and ``section`` the report section that demonstrates it. A non-matching row
-    is ``explained`` when a reading reproduces the printed number within tolerance.
-    """
-
-    description: str
-    value: float
-    section: str
-
-
-@dataclass(frozen=True)
 class Result:
     """What a claim's function returns.
 
@@ -98,12 +81,17 @@ class Result:
     note : str
         The evidence, in words, with the numbers behind the value.
     readings : sequence of Reading
-        Alternative readings of the printed number (for ``explained``).
+        Alternative readings of the printed number (for ``explained``), each with its
+        ``family`` label (:class:`abglib.verdicts.Reading`).
+    related : mapping
+        Related quantities for the claim-specific reading families of
+        :mod:`abglib.verdicts.readings` (``values``, ``neighbours``, ``dt``, ``inputs``).
     """
 
     value: Any
     note: str = ""
     readings: Sequence[Reading] = ()
+    related: Mapping[str, Any] = field(default_factory=dict)
 
 
 # --------------------------------------------------------------------------- claims
@@ -463,14 +451,16 @@ def evaluate(
             variants[key] = make_study(config_with(study.config, name, value))
         return variants[key]
 
-    rows, points = [], []
+    rows, points, judged = [], [], []
     for pub in published.itertuples(index=False):
         claim = resolved[pub.key]
         res = claim.run(study, pub.key)
-        row = judge(doc, pub, res.value, res.note, _alternatives(pub.key, res), overrides)
+        judged.append(_judged(doc, pub, res, overrides))
+        row = judged[-1].row
+        vague = row.pop("robust", "")
         inputs = claim.inputs(pub.key)
         row["depends_on"] = ";".join(inputs)
-        row["robust"] = ""
+        row["robust"] = vague
         if inputs:
             flips = []
             for name in inputs:
@@ -481,8 +471,7 @@ def evaluate(
                         v, rep = row["verdict"], row["reproduced"]
                     else:
                         r = claim.run(variant(name, value), pub.key)
-                        alts = _alternatives(pub.key, r)
-                        other = judge(doc, pub, r.value, r.note, alts, overrides)
+                        other = _judged(doc, pub, r, overrides).row
                         v, rep = other["verdict"], other["reproduced"]
                     by_value.append((value, v))
                     points.append(
@@ -497,7 +486,7 @@ def evaluate(
                     )
                 if len({v for _, v in by_value}) > 1:
                     flips.append(_describe_flip(rng, by_value))
-            row["robust"] = "false" if flips else "true"
+            row["robust"] = "false" if flips or vague == "false" else "true"
             if flips:
                 was = row["verdict"]
                 row["verdict"] = "not_reproducible"
@@ -507,12 +496,22 @@ def evaluate(
                     + (f" ({row['note']})" if row["note"] else "")
                 )
         rows.append(row)
+    sentences = published[SENTENCE_COLUMN] if SENTENCE_COLUMN in published else [""] * len(rows)
+    rows = judge_sentences(judged, list(sentences))
     comparison = pd.DataFrame(rows, columns=COMPARISON_COLUMNS)
     return comparison, pd.DataFrame(points, columns=ROBUSTNESS_COLUMNS)
 
 
 def _alternatives(key: str, res: Result) -> list[Alternative]:
-    return [Alternative(key, r.description, r.value, r.section) for r in res.readings]
+    return [Alternative(key, r.description, r.value, r.section, r.family) for r in res.readings]
+
+
+def _judged(doc: str, pub, res: Result, overrides):
+    """One row judged by the verdict engine (:mod:`abglib.verdicts`), with what the
+    sentence rule needs."""
+    return _assess(
+        doc, pub, res.value, res.note, _alternatives(pub.key, res), overrides, res.related
+    )
 
 
 def _same(a, b) -> bool:

@@ -32,14 +32,26 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
-from decimal import Decimal, InvalidOperation
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
 from .._checks import AbglibValueError
+
+# the judging half lives in abglib.verdicts (one home for judging); re-exported here so
+# that every existing import keeps working
+from ..verdicts import (  # noqa: F401
+    SIGNIFICANT_DIGITS,
+    Alternative,
+    format_number,
+    judge,
+    parse_printed,
+    tolerance_from_printed,
+    verdict,
+    within_tolerance,
+)
+from ..verdicts._judge import HAND_WRITTEN, _assess, _text, judge_sentences
 
 __all__ = [
     "ALTERNATIVE_COLUMNS",
@@ -81,6 +93,8 @@ COMPARISON_COLUMNS = [
     "note",
     "depends_on",
     "robust",
+    "reading",
+    "chance",
 ]
 #: Verdicts, in scorecard column order.
 VERDICTS = ["match", "mismatch", "explained", "not_reproducible"]
@@ -88,76 +102,17 @@ VERDICTS = ["match", "mismatch", "explained", "not_reproducible"]
 SCORECARD_COLUMNS = ["doc", *VERDICTS, "total", "robust", "fragile"]
 #: Required columns of a transcription file ``data/published/<doc>/*.csv``.
 PUBLISHED_COLUMNS = ["key", "item", "quantity", "published", "where"]
+#: Optional column of a transcription file: rows sharing a value were transcribed from one
+#: printed sentence or table cell group and are judged together
+#: (:func:`abglib.verdicts.judge_sentences`).
+SENTENCE_COLUMN = "sentence"
 #: Columns of the reproduced-values table written by a document's reproducing rule.
 REPRODUCED_COLUMNS = ["key", "reproduced", "note"]
 #: Columns of the alternatives table written by a document's reproducing rule.
 ALTERNATIVE_COLUMNS = ["key", "alternative", "value", "section"]
 
-#: Default number of significant digits written to deterministic tables.
-SIGNIFICANT_DIGITS = 10
-
-# a relative slack on the tolerance so that an error of exactly half a unit in the last
-# digit, computed in binary floating point, is not lost to representation error
-_TOL_SLACK = 1e-9
-
 
 # --------------------------------------------------------------------------- numbers
-def parse_printed(text: str) -> Decimal:
-    """Parse a number as printed (``'.135'``, ``'-3'``, ``'1.20'``, ``'2e-3'``) exactly.
-
-    Raises
-    ------
-    AbglibValueError
-        If ``text`` is not a plain decimal number.
-    """
-    s = str(text).strip().replace("\u2212", "-")  # a typeset minus sign
-    try:
-        value = Decimal(s)
-    except InvalidOperation:
-        raise AbglibValueError(
-            f"published must be a number as printed (e.g. '.135', '1452', '-3'), got {text!r}"
-        ) from None
-    if not value.is_finite():
-        raise AbglibValueError(f"published must be finite, got {text!r}")
-    return value
-
-
-def tolerance_from_printed(text: str) -> float:
-    """Half a unit in the last printed digit of ``text``.
-
-    ``'0.0402'`` → 5e-5, ``'.135'`` → 5e-4, ``'1.20'`` → 5e-3 (the trailing zero is a
-    printed digit), ``'23'``, ``'1452'`` and ``'-3'`` → 0.5, ``'2.5e-3'`` → 5e-5.
-
-    Examples
-    --------
-    >>> tolerance_from_printed('.135')
-    0.0005
-    >>> tolerance_from_printed('1452')
-    0.5
-    """
-    exponent = parse_printed(text).as_tuple().exponent
-    return float(Decimal(5) * Decimal(10) ** (exponent - 1))
-
-
-def format_number(x, digits: int = SIGNIFICANT_DIGITS) -> str:
-    """Format a number with ``digits`` significant digits, deterministically.
-
-    Empty string for ``None``/NaN; booleans as ``True``/``False``; ``-0`` becomes ``0``.
-    """
-    if x is None:
-        return ""
-    if isinstance(x, (bool, np.bool_)):
-        return "True" if x else "False"
-    if isinstance(x, str):
-        return x
-    xf = float(x)
-    if math.isnan(xf):
-        return ""
-    if xf == 0.0:
-        return "0"
-    return f"{xf:.{digits}g}"
-
-
 #: Below this relative size a difference between two exact routes is floating-point
 #: round-off: it moves with the BLAS kernel and the summation order, so it is written as
 #: this bound (notes: :func:`roundoff`; tables: precision ``"<1e-12"``), never as digits.
@@ -347,7 +302,9 @@ def read_published(paths: Iterable) -> pd.DataFrame:
                     parse_printed(text)
                 except AbglibValueError as exc:
                     raise AbglibValueError(f"{p.name}, key {key!r}: {exc}") from None
-        frames.append(df[PUBLISHED_COLUMNS])
+        if SENTENCE_COLUMN not in df.columns:
+            df[SENTENCE_COLUMN] = ""
+        frames.append(df[[*PUBLISHED_COLUMNS, SENTENCE_COLUMN]])
     if not frames:
         raise AbglibValueError("no published tables given")
     out = pd.concat(frames, ignore_index=True)
@@ -355,98 +312,6 @@ def read_published(paths: Iterable) -> pd.DataFrame:
     if dup:
         raise AbglibValueError(f"published keys must be unique, got duplicates {dup}")
     return out
-
-
-@dataclass(frozen=True)
-class Alternative:
-    """An alternative reading of one published number, computed by abglib.
-
-    Attributes
-    ----------
-    key : str
-        The published key it explains.
-    alternative : str
-        What was computed instead, in words (goes into the note).
-    value : float
-        Its value.
-    section : str
-        The report section that demonstrates it.
-    """
-
-    key: str
-    alternative: str
-    value: float
-    section: str
-
-
-# --------------------------------------------------------------------------- verdicts
-def within_tolerance(a: float, b: float, tolerance: float) -> bool:
-    """Whether ``a`` and ``b`` differ by at most ``tolerance`` (with the binary slack
-    ``_TOL_SLACK``, so that an error of exactly half a unit in the last digit counts as
-    within): the one rule of a match and of a value that did not move."""
-    return abs(float(a) - float(b)) <= tolerance * (1.0 + _TOL_SLACK)
-
-
-def verdict(published, reproduced, tolerance, alternatives: Iterable[Alternative] = ()):
-    """Verdict and the explaining alternative (or None) for one row.
-
-    Parameters
-    ----------
-    published : str
-        The printed number, or ``''`` for a qualitative claim.
-    reproduced : float, bool or None
-        Our value; for a qualitative claim, whether the check holds; None or NaN when
-        not reproducible.
-    tolerance : float or None
-        Accepted absolute error (ignored for a qualitative claim).
-    alternatives : iterable of Alternative
-        Alternative readings; the first within tolerance of the printed number explains
-        a non-match.
-
-    Returns
-    -------
-    (str, Alternative or None)
-    """
-    if _is_missing(reproduced):
-        return "not_reproducible", None
-    if not str(published).strip():
-        return ("match" if _as_bool(reproduced) else "mismatch"), None
-    pub = float(parse_printed(published))
-    if within_tolerance(reproduced, pub, tolerance):
-        return "match", None
-    for alt in alternatives:
-        if not _is_missing(alt.value) and within_tolerance(alt.value, pub, tolerance):
-            return "explained", alt
-    return "mismatch", None
-
-
-def _is_missing(x) -> bool:
-    if x is None:
-        return True
-    if isinstance(x, str):
-        return not x.strip()
-    try:
-        return bool(np.isnan(x))
-    except TypeError:
-        return False
-
-
-def _as_bool(x) -> bool:
-    if isinstance(x, str):
-        s = x.strip().lower()
-        if s in ("true", "1", "1.0"):
-            return True
-        if s in ("false", "0", "0.0"):
-            return False
-        raise AbglibValueError(f"a qualitative check must be True or False, got {x!r}")
-    if isinstance(x, (bool, np.bool_)):
-        return bool(x)
-    if isinstance(x, (int, float, np.integer, np.floating)) and float(x) in (0.0, 1.0):
-        return bool(x)
-    raise AbglibValueError(
-        f"a qualitative check must be True or False, got {x!r} (a claim with an empty "
-        "published value returns whether its check holds, not a number)"
-    )
 
 
 def build_comparison(
@@ -502,104 +367,24 @@ def build_comparison(
         if bad:
             raise AbglibValueError(f"{doc}: alternatives for unknown keys {bad}")
         for row in alternatives.itertuples(index=False):
+            family = getattr(row, "family", "") or HAND_WRITTEN
             alts.setdefault(row.key, []).append(
-                Alternative(row.key, row.alternative, row.value, row.section)
+                Alternative(row.key, row.alternative, row.value, row.section, family)
             )
 
-    rows = []
+    judged = []
     for row in published.itertuples(index=False):
         r = rep.loc[row.key]
-        out = judge(doc, row, r["reproduced"], r.get("note", ""), alts.get(row.key, ()), overrides)
+        j = _assess(doc, row, r["reproduced"], r.get("note", ""), alts.get(row.key, ()), overrides)
+        vague = j.row.pop("robust", "")
         for col in ("depends_on", "robust"):
-            out[col] = _text(r.get(col, ""))
-        rows.append(out)
+            j.row[col] = _text(r.get(col, ""))
+        if vague and not j.row["robust"]:
+            j.row["robust"] = vague
+        judged.append(j)
+    sentences = published[SENTENCE_COLUMN] if SENTENCE_COLUMN in published else [""] * len(judged)
+    rows = judge_sentences(judged, list(sentences))
     return pd.DataFrame(rows, columns=COMPARISON_COLUMNS)
-
-
-def judge(doc: str, row, value, note, alternatives=(), overrides=None) -> dict:
-    """One row of ``comparison.csv`` (without ``depends_on`` and ``robust``).
-
-    Parameters
-    ----------
-    doc : str
-        Document key.
-    row
-        The published row (attributes ``key, item, quantity, published``).
-    value : float, bool or None
-        The reproduced value (a bool for a qualitative claim; None when not reproducible).
-    note : str
-        The evidence; required when ``value`` is missing.
-    alternatives : iterable of Alternative
-        Alternative readings (an ``explained`` verdict names the first that matches).
-    overrides : mapping, optional
-        ``{key: {"tolerance": float, "reason": str}}``.
-    """
-    overrides = overrides or {}
-    note = _text(note)
-    qualitative = not row.published.strip()
-    tol, tol_note = None, ""
-    if not qualitative:
-        tol = tolerance_from_printed(row.published)
-        if row.key in overrides:
-            ov = overrides[row.key]
-            reason = _text(ov.get("reason", ""))
-            if not reason:
-                raise AbglibValueError(
-                    f"{doc}: tolerance override for {row.key!r} must give a reason"
-                )
-            tol = float(ov["tolerance"])
-            if not tol > 0:
-                raise AbglibValueError(
-                    f"{doc}: tolerance override for {row.key!r} must be > 0, got {tol!r}"
-                )
-            tol_note = f"tolerance {format_number(tol)} ({reason})"
-    v, alt = verdict(row.published, value, tol, alternatives)
-    abs_err = rel_err = None
-    if not qualitative and v != "not_reproducible":
-        pub = float(parse_printed(row.published))
-        abs_err = float(value) - pub
-        rel_err = abs_err / abs(pub) if pub != 0 else None
-    if v == "not_reproducible" and not note:
-        raise AbglibValueError(f"{doc}: not-reproducible key {row.key!r} needs a note saying why")
-    if v == "explained":
-        note = (
-            f"{alt.alternative} gives {format_number(alt.value, 6)}, "
-            f"which matches the printed value; see report section '{alt.section}'"
-            + (f". {note}" if note else "")
-        )
-    elif v == "mismatch" and not note:
-        note = (
-            f"not explained: differs by {format_number(abs_err, 3)} "
-            f"({format_number(abs(abs_err) / tol, 3)} tolerances)"
-            if abs_err is not None
-            else "qualitative check does not hold"
-        )
-    elif v == "match":
-        note = note if qualitative else ""
-    if tol_note:
-        note = f"{note}; {tol_note}" if note else tol_note
-    return {
-        "doc": doc,
-        "item": row.item,
-        "quantity": row.quantity,
-        "published": row.published,
-        "reproduced": _reproduced_value(value, qualitative),
-        "abs_err": abs_err,
-        "rel_err": rel_err,
-        "tolerance": tol,
-        "verdict": v,
-        "note": note,
-    }
-
-
-def _reproduced_value(value, qualitative: bool):
-    if _is_missing(value):
-        return None
-    return _as_bool(value) if qualitative else float(value)
-
-
-def _text(x) -> str:
-    return "" if _is_missing(x) else str(x).strip()
 
 
 def _index_unique(df: pd.DataFrame, name: str) -> pd.DataFrame:

@@ -86,7 +86,7 @@ def run(cfg=None):
 def test_comparison_has_the_contract_columns_in_order():
     comp, _ = run()
     assert list(comp.columns) == COMPARISON_COLUMNS
-    assert COMPARISON_COLUMNS[-2:] == ["depends_on", "robust"]
+    assert COMPARISON_COLUMNS[-4:] == ["depends_on", "robust", "reading", "chance"]
 
 
 def test_robust_verdict_is_kept_and_marked():

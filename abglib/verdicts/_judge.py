@@ -1,0 +1,383 @@
+"""The verdict of one row, and of the rows of one printed sentence.
+
+``match`` when the reproduced value is within tolerance of the printed one; ``explained``
+when it is not but a reading of the catalogue (:mod:`abglib.verdicts.readings`) or a
+hand-written :class:`Reading` reproduces the printed number within tolerance at a chance
+within its budget; ``mismatch`` otherwise; ``not_reproducible`` without a value, or when
+the verdict flips across a vague word's declared range (:mod:`abglib.verdicts.vague`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .._checks import AbglibValueError
+from ._numbers import format_number, parse_printed, tolerance_from_printed, within_tolerance
+from .readings import Explanation, Row, explain
+from .vague import find_vague, vague_tolerances
+
+__all__ = ["Alternative", "Reading", "judge", "judge_sentences", "verdict"]
+
+#: the family of a hand-written reading that does not name one
+HAND_WRITTEN = "claim:hand-written reading"
+
+
+@dataclass(frozen=True)
+class Reading:
+    """An alternative reading of a printed number, computed by a claim.
+
+    ``description`` says what is computed instead (it goes into the note), ``value`` is
+    its value, ``section`` the report section that demonstrates it and ``family`` its
+    ``family:detail`` label (``convention:two-sided bandwidth``, ...). It explains a
+    non-matching row only within tolerance and at a look-elsewhere chance of at most
+    :data:`~abglib.verdicts.readings.THRESHOLD` (readings with one label form one family).
+    """
+
+    description: str
+    value: float
+    section: str
+    family: str = HAND_WRITTEN
+
+
+@dataclass(frozen=True)
+class Alternative:
+    """A :class:`Reading` tied to the published key it may explain (``comparison.csv``
+    inputs of :func:`abglib.reporting.compare.build_comparison`)."""
+
+    key: str
+    alternative: str
+    value: float
+    section: str
+    family: str = HAND_WRITTEN
+
+    @property
+    def description(self) -> str:
+        return self.alternative
+
+
+def verdict(published, reproduced, tolerance, alternatives: Iterable = ()):
+    """Verdict and the explaining alternative (or None) for one row, by tolerance alone.
+
+    Parameters
+    ----------
+    published : str
+        The printed number, or ``''`` for a qualitative claim.
+    reproduced : float, bool or None
+        Our value; for a qualitative claim, whether the check holds; None or NaN when
+        not reproducible.
+    tolerance : float or None
+        Accepted absolute error (ignored for a qualitative claim).
+    alternatives : iterable of Alternative
+        Alternative readings; the first within tolerance explains a non-match (no
+        chance check: :func:`judge` adds it).
+
+    Returns
+    -------
+    (str, Alternative or None)
+    """
+    if _is_missing(reproduced):
+        return "not_reproducible", None
+    if not str(published).strip():
+        return ("match" if _as_bool(reproduced) else "mismatch"), None
+    pub = float(parse_printed(published))
+    if within_tolerance(reproduced, pub, tolerance):
+        return "match", None
+    for alt in alternatives:
+        if not _is_missing(alt.value) and within_tolerance(alt.value, pub, tolerance):
+            return "explained", alt
+    return "mismatch", None
+
+
+@dataclass
+class _Judged:
+    row: dict
+    explanation: Explanation | None = None
+    tolerance: float | None = None
+    published: float | None = None
+    readings: Sequence = field(default_factory=tuple)
+
+
+def judge(
+    doc: str,
+    row,
+    value,
+    note,
+    alternatives=(),
+    overrides=None,
+    related: Mapping[str, Any] | None = None,
+) -> dict:
+    """One row of ``comparison.csv`` (without ``depends_on``; ``robust`` only when a
+    vague word decides it).
+
+    Parameters
+    ----------
+    doc : str
+        Document key.
+    row
+        The published row (attributes ``key, item, quantity, published``).
+    value : float, bool or None
+        The reproduced value (a bool for a qualitative claim; None when not reproducible).
+    note : str
+        The evidence; required when ``value`` is missing.
+    alternatives : iterable of Reading or Alternative
+        Hand-written readings (each tried through the chance check of its family).
+    overrides : mapping, optional
+        ``{key: {"tolerance": float, "reason": str}}``.
+    related : mapping, optional
+        Related quantities for the claim-specific reading families
+        (:mod:`abglib.verdicts.readings`).
+    """
+    return _assess(doc, row, value, note, alternatives, overrides, related).row
+
+
+def _assess(doc, row, value, note, alternatives=(), overrides=None, related=None) -> _Judged:
+    overrides = overrides or {}
+    note = _text(note)
+    qualitative = not str(row.published).strip()
+    tol, tol_note = None, ""
+    if not qualitative:
+        tol = tolerance_from_printed(row.published)
+        if row.key in overrides:
+            ov = overrides[row.key]
+            reason = _text(ov.get("reason", ""))
+            if not reason:
+                raise AbglibValueError(
+                    f"{doc}: tolerance override for {row.key!r} must give a reason"
+                )
+            tol = float(ov["tolerance"])
+            if not tol > 0:
+                raise AbglibValueError(
+                    f"{doc}: tolerance override for {row.key!r} must be > 0, got {tol!r}"
+                )
+            tol_note = f"tolerance {format_number(tol)} ({reason})"
+    readings = tuple(alternatives)
+    v, _ = verdict(row.published, value, tol)
+    out = {"reading": "", "chance": None}
+    abs_err = rel_err = pub = None
+    if not qualitative and v != "not_reproducible":
+        pub = float(parse_printed(row.published))
+        abs_err = float(value) - pub
+        rel_err = abs_err / abs(pub) if pub != 0 else None
+    if v == "not_reproducible" and not note:
+        raise AbglibValueError(f"{doc}: not-reproducible key {row.key!r} needs a note saying why")
+    vague_note = ""
+    if pub is not None and row.key not in overrides:
+        words = find_vague(f"{row.quantity} {row.item}")
+        windows = vague_tolerances(pub, tol, words)
+        if windows:
+            ends = ["match" if lo <= abs_err <= hi else "mismatch" for lo, hi in windows]
+            w = [x for x in words if x.kind == "relative"][0]
+            span = f"{format_number(100 * w.low, 3)}-{format_number(100 * w.high, 3)} %"
+            if ends[0] == ends[1]:
+                out["robust"] = "true"
+                vague_note = f"'{w.word}' read as within {span} ({w.basis}): {ends[0]} at both ends"
+                if ends[0] == "match":
+                    v = "match"
+                    tol = max(-windows[1][0], windows[1][1])
+            else:
+                out["robust"] = "false"
+                vague_note = (
+                    f"verdict hinges on how '{w.word}' is read ({span}; {w.basis}): "
+                    f"{ends[1]} at {format_number(100 * w.high, 3)} %, {ends[0]} at "
+                    f"{format_number(100 * w.low, 3)} %"
+                )
+                v = "not_reproducible"
+    explanation = None
+    if v == "mismatch" and pub is not None and np.isfinite(float(value)):
+        explanation = explain(Row(row.published, float(value), tol, dict(related or {})), readings)
+        best = explanation.best
+        if best is not None:
+            v = "explained"
+            out["reading"], out["chance"] = best.candidate.label, _chance(best.chance)
+            note = _explained_note(best, explanation) + (f". {note}" if note else "")
+        else:
+            note = (note or _unexplained(abs_err, tol)) + _tried_note(explanation)
+    elif v == "mismatch" and pub is None and not note:
+        note = "qualitative check does not hold"
+    elif v == "mismatch" and not note:
+        note = _unexplained(abs_err, tol)
+    elif v == "match":
+        note = note if qualitative else ""
+    if vague_note:
+        note = f"{vague_note}. {note}" if note else vague_note
+    if tol_note:
+        note = f"{note}; {tol_note}" if note else tol_note
+    out = {
+        "doc": doc,
+        "item": row.item,
+        "quantity": row.quantity,
+        "published": row.published,
+        "reproduced": _reproduced_value(value, qualitative),
+        "abs_err": abs_err,
+        "rel_err": rel_err,
+        "tolerance": tol,
+        "verdict": v,
+        "note": note,
+        **out,
+    }
+    return _Judged(out, explanation, tol, pub, readings)
+
+
+def _chance(c: float) -> float:
+    """A chance written with 3 significant digits (a model's number, not a measurement)."""
+    return float(f"{c:.3g}")
+
+
+def _unexplained(abs_err, tol) -> str:
+    return (
+        f"not explained: differs by {format_number(abs_err, 3)} "
+        f"({format_number(abs(abs_err) / tol, 3)} tolerances)"
+    )
+
+
+def _explained_note(hit, explanation: Explanation) -> str:
+    c = hit.candidate
+    what = c.detail or c.label
+    where = f"; see report section '{c.section}'" if c.section else ""
+    return (
+        f"reading {c.label} ({what}) gives {format_number(c.value, 6)}, which matches the "
+        f"printed value at chance {format_number(_chance(hit.chance))} (budget "
+        f"{format_number(_chance(hit.budget))}){where}; families tried: "
+        f"{explanation.tried_text()}"
+    )
+
+
+def _tried_note(explanation: Explanation) -> str:
+    near = [h for h in explanation.hits if not h.accepted]
+    text = f"; reading families tried (chance): {explanation.tried_text()}"
+    if near:
+        h = near[0]
+        text += (
+            f"; {h.candidate.label} ({h.candidate.detail or h.candidate.label}) gives "
+            f"{format_number(h.candidate.value, 6)} but at chance "
+            f"{format_number(_chance(h.chance))} > budget {format_number(_chance(h.budget))}"
+        )
+    return text
+
+
+# ----------------------------------------------------------------------- sentences
+def judge_sentences(judged: Sequence[_Judged], sentences: Sequence[str]) -> list[dict]:
+    """One sentence, one judgement: the rows of one printed sentence share a reading.
+
+    ``sentences[i]`` is the grouping key of ``judged[i]`` (empty: a row of its own).
+    Within a group, a shared reading (a convention, an aggregation, a scope: not a
+    misprint of one number, :attr:`~abglib.verdicts.readings.Family.shared`) accepted
+    for one row is tried for all: it stands only when, for every numeric row of the
+    group that it gives a value for, that value is within tolerance of the printed
+    number, and when the product of the chances of the rows it explains is within
+    budget. A reading that fails is withdrawn from every row of the group (they become
+    ``mismatch``, the note saying which sibling it contradicts), so that rows never
+    carry contradicting readings.
+
+    Returns
+    -------
+    list of dict : the rows, in order.
+    """
+    rows = [j.row for j in judged]
+    groups: dict[str, list[int]] = {}
+    for i, s in enumerate(sentences):
+        if str(s).strip():
+            groups.setdefault(str(s).strip(), []).append(i)
+    for members in groups.values():
+        if len(members) < 2:
+            continue
+        for i in members:
+            j = judged[i]
+            if rows[i]["verdict"] != "explained" or j.explanation is None:
+                continue
+            best = j.explanation.best
+            if not best.shared:
+                continue
+            label = best.candidate.label
+            conflicts, joint = [], best.chance
+            for k in members:
+                if (
+                    k == i
+                    or judged[k].published is None
+                    or rows[k]["verdict"] == "not_reproducible"
+                ):
+                    continue
+                got = _value_under(judged[k], label)
+                if got is None:
+                    if rows[k]["verdict"] != "match":
+                        conflicts.append(f"'{rows[k]['item']}' (no value under it)")
+                    continue
+                if not within_tolerance(got, judged[k].published, judged[k].tolerance):
+                    conflicts.append(f"'{rows[k]['item']}' ({format_number(got, 6)})")
+                elif rows[k]["verdict"] != "match":
+                    joint *= _row_chance(judged[k], label)
+            if joint > best.budget and not conflicts:
+                conflicts.append(f"joint chance {format_number(_chance(joint))}")
+            if conflicts:
+                rows[i]["verdict"] = "mismatch"
+                rows[i]["reading"], rows[i]["chance"] = "", None
+                rows[i]["note"] = (
+                    f"reading {label} would explain this row alone but is withdrawn: the "
+                    f"same sentence ({sentences[i]}) under it contradicts "
+                    f"{', '.join(conflicts)}; {rows[i]['note']}"
+                )
+    return rows
+
+
+def _value_under(j: _Judged, label: str):
+    """The value row ``j`` takes under the reading ``label`` (hand-written or catalogue)."""
+    for r in j.readings:
+        if getattr(r, "family", HAND_WRITTEN) == label:
+            return float(r.value)
+    if j.explanation is not None:
+        for h in j.explanation.hits:
+            if h.candidate.label == label:
+                return h.candidate.value
+    return None
+
+
+def _row_chance(j: _Judged, label: str) -> float:
+    for h in j.explanation.hits if j.explanation else ():
+        if h.candidate.label == label:
+            return h.chance
+    return 1.0
+
+
+# ----------------------------------------------------------------------- helpers
+def _is_missing(x) -> bool:
+    if x is None:
+        return True
+    if isinstance(x, str):
+        return not x.strip()
+    try:
+        return bool(np.isnan(x))
+    except TypeError:
+        return False
+
+
+def _as_bool(x) -> bool:
+    if isinstance(x, str):
+        s = x.strip().lower()
+        if s in ("true", "1", "1.0"):
+            return True
+        if s in ("false", "0", "0.0"):
+            return False
+        raise AbglibValueError(f"a qualitative check must be True or False, got {x!r}")
+    if isinstance(x, (bool, np.bool_)):
+        return bool(x)
+    if isinstance(x, (int, float, np.integer, np.floating)) and float(x) in (0.0, 1.0):
+        return bool(x)
+    raise AbglibValueError(
+        f"a qualitative check must be True or False, got {x!r} (a claim with an empty "
+        "published value returns whether its check holds, not a number)"
+    )
+
+
+def _reproduced_value(value, qualitative: bool):
+    if _is_missing(value):
+        return None
+    return _as_bool(value) if qualitative else float(value)
+
+
+def _text(x) -> str:
+    return "" if _is_missing(x) else str(x).strip()
+
