@@ -19,6 +19,7 @@ import numpy as np
 
 from . import _buffers
 from ._checks import AbglibValueError, as_float_array, check_positive, describe
+from ._perturb import perturb
 from .gains import Gains, require_gains
 
 __all__ = ["INIT_MODES", "OUTPUTS", "TrackResult", "track"]
@@ -286,14 +287,15 @@ def track(
         mask_det = ~np.ma.getmaskarray(z)
         z = np.ma.getdata(z).astype(np.float64)
         detected = mask_det if detected is None else (np.asarray(detected, bool) & mask_det)
-    z = as_float_array("z", z)
+    # perturbed arithmetic (ABGLIB_PERTURB, abglib._perturb): a no-op in a plain build
+    z = perturb(as_float_array("z", z))
     if z.ndim == 0:
         raise AbglibValueError("z must have a time axis (shape (..., n)), got a scalar")
     if z.size == 0:
         raise AbglibValueError(f"z must not be empty, got shape {z.shape}")
     n = z.shape[-1]
 
-    dt = check_positive("dt", dt)
+    dt = perturb(check_positive("dt", dt))
     if detected is None:
         det = np.ones((1,), dtype=np.uint8)
     else:

@@ -18,12 +18,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import AbglibValueError, check_finite
+from ._perturb import perturb
 
 __all__ = ["Gains", "require_gains"]
 
 
 def _frozen(name: str, value):
-    arr = check_finite(name, value)
+    # perturbed arithmetic (ABGLIB_PERTURB, abglib._perturb): a no-op in a plain build
+    arr = perturb(np.asarray(check_finite(name, value), dtype=np.float64))
     if arr.ndim == 0:
         return float(arr)
     arr = arr.copy()

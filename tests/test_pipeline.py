@@ -16,6 +16,8 @@ import pandas as pd
 import pytest
 
 import abglib
+from abglib._perturb import ENV as PERTURB
+from abglib.reporting import precision
 from abglib.reporting.compare import COMPARISON_COLUMNS, SCORECARD_COLUMNS, VERDICTS
 
 pytestmark = pytest.mark.pipeline
@@ -44,21 +46,17 @@ def _snakemake(workdir: Path, *args: str, env=None) -> subprocess.CompletedProce
 
 
 # what the second build makes: every document's tables and the benchmark matrix's, without
-# figures and reports (they do not depend on the BLAS kernel beyond the tables they show)
-TABLE_TARGETS = [
-    "datasets",
-    "scorecard",
-    "benchmark_league",
-    "benchmark_tradeoff",
-    "benchmark_peers",
-]
+# figures and reports (they show nothing the tables do not hold)
+TABLE_TARGETS = list(precision.TABLE_TARGETS)
 
 
 @pytest.fixture(scope="module")
 def two_runs(tmp_path_factory):
-    """Run 1: the whole small build. Run 2: its tables again, on another OpenBLAS kernel."""
+    """Run 1: the whole small build. Run 2: its tables again, with perturbed arithmetic
+    (``ABGLIB_PERTURB``, abglib._perturb): every float input of the numerical core moved by
+    up to ~1e-13 relative, more than another CPU, BLAS kernel or dependency set moves it."""
     dirs = []
-    envs = {"run1": None, "run2": dict(os.environ, OPENBLAS_CORETYPE="Prescott")}
+    envs = {"run1": None, "run2": dict(os.environ, **{PERTURB: "1"})}
     targets = {"run1": [], "run2": TABLE_TARGETS}
     # run 2 logs the scheduler's rounds (--verbose: "Ready jobs: N" once a round)
     flags = {"run1": [], "run2": ["--verbose"]}
@@ -132,8 +130,9 @@ def test_report_is_self_contained_and_relocatable(two_runs):
 
 
 def test_abglib_verify_finds_the_two_builds_identical(two_runs):
-    """Run 2 (another BLAS kernel) against run 1: every table within its written precision,
-    every verdict identical (`abglib verify --partial`: run 2 has no reports)."""
+    """Run 2 (perturbed arithmetic) against run 1: every table within its written precision
+    (derived by ``abglib precision``), every verdict identical (`abglib verify --partial`:
+    run 2 has no reports)."""
     a, b = two_runs
     exe = Path(sys.executable).parent / "abglib"
     cmd = [str(exe) if exe.exists() else "abglib", "verify", str(b / "results"), "--partial"]
@@ -146,17 +145,6 @@ def test_abglib_verify_finds_the_two_builds_identical(two_runs):
         assert f"\n{doc}: " in out.stdout, doc
 
 
-def test_two_clean_runs_give_identical_csv_tables(two_runs):
-    """Byte for byte: each number is written at the precision it is reproducible to."""
-    a, b = two_runs
-    files = sorted(
-        p.relative_to(b) for p in (b / "results").rglob("*.csv") if "engine_speed" not in p.name
-    )
-    assert len(files) > 10
-    different = [str(f) for f in files if (a / f).read_bytes() != (b / f).read_bytes()]
-    assert different == []
-
-
 def test_scheduler_runs_a_round_when_a_job_ends(two_runs):
     # Snakemake's rate limit would add a chain of rounds, one a second, per ended job (a
     # round per job end and a timer's round per round: 179 rounds for 24 jobs of run 2);
@@ -165,7 +153,9 @@ def test_scheduler_runs_a_round_when_a_job_ends(two_runs):
     rounds = len(re.findall(r"^Ready jobs", log, flags=re.M))
     jobs = len(re.findall(r"^Finished jobid", log, flags=re.M))
     assert jobs > 5, log[-2000:]
-    assert rounds <= 2 * jobs + 2, (rounds, jobs)
+    # at least a round for every other job end: fewer means the log no longer says
+    # "Ready jobs" once a round and this test would pass on anything
+    assert max(1, jobs // 2) <= rounds <= 2 * jobs + 2, (rounds, jobs)
 
 
 def test_second_run_schedules_nothing(two_runs):

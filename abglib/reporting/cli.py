@@ -15,6 +15,11 @@
     ``reports/v0.3.0``, or a build's ``results/reports/v<version>``), per document: rows
     added or removed, verdicts changed, reproduced values moved beyond their tolerance.
     Prints the counts; writes ``changes.csv`` and ``changes.html`` to ``--out``.
+``abglib precision``
+    Derive the digits every table column is reproducible to, by building the tables plain
+    and under several perturbations of the arithmetic (:mod:`abglib.reporting.precision`),
+    and write them to ``abglib/reporting/_precision_table.py``; a text cell (a note, a
+    verdict) that moves is listed and makes it exit 1.
 ``abglib findings``
     Rewrite the README's findings from the release's tables (``docs/readme_findings.md`` is the
     template); ``--check`` only reports whether the README is current.
@@ -60,6 +65,16 @@ def _parser() -> argparse.ArgumentParser:
         default=None,
         help="folder for changes.csv and changes.html (default: print the counts only)",
     )
+    pr = sub.add_parser("precision", help="derive each table column's reproducible digits")
+    pr.add_argument(
+        "--configfile",
+        type=Path,
+        action="append",
+        help="config(s) to build (default: config.yaml and tests/data/config_small.yaml)",
+    )
+    pr.add_argument("--runs", type=int, default=3, help="perturbation seeds (default 3)")
+    pr.add_argument("--cores", type=int, default=2)
+    pr.add_argument("--check", action="store_true", help="exit 1 if the table would change")
     f = sub.add_parser("findings", help="rewrite the README's findings from a release")
     f.add_argument("--release", type=Path, default=RELEASE, help=f"default: {RELEASE}")
     f.add_argument("--readme", type=Path, default=Path("README.md"))
@@ -146,12 +161,46 @@ def changes(old: Path, new: Path, out: Path | None) -> int:
     return 0
 
 
+def precision(configfiles, runs: int, cores: int, check: bool) -> int:
+    from . import precision as prec
+
+    repo = Path(prec.__file__).resolve().parents[2]
+    configs = configfiles or [repo / "config.yaml", repo / "tests" / "data" / "config_small.yaml"]
+    specs, derivations = prec.derive_precision(configs, runs, cores)
+    moved = [t for d in derivations for t in d.text_differences]
+    problems = [p for d in derivations for p in d.problems]
+    for cfg, d in zip(configs, derivations, strict=True):
+        ro = sum(c.roundoff_cells for c in d.columns)
+        fewer = sum(1 for c in d.columns if c.spec is not None)
+        print(
+            f"{cfg}: {len(d.columns)} float columns, {fewer} with fewer digits or a bound, "
+            f"{ro} round-off cells"
+        )
+    for table, row, col, a, b in moved[:40]:
+        print(f"  text moved: {table}, row {row}, {col}: {a!r} -> {b!r}")
+    for p in problems[:40]:
+        print(f"  problem: {p}")
+    target = Path(prec.__file__).with_name("_precision_table.py")
+    how = f"abglib precision --runs {runs} on {', '.join(Path(c).name for c in configs)}"
+    if check:
+        from ._precision_table import PRECISION
+
+        same = PRECISION == specs
+        print(f"{target}: {'current' if same else 'would change'}")
+        return 0 if same and not moved and not problems else 1
+    prec.write_table_module(specs, target, how)
+    print(f"wrote {target} ({sum(len(v) for v in specs.values())} column specs)")
+    return 1 if moved or problems else 0
+
+
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     if args.command == "verify":
         return verify(args.build, args.release, args.limit, args.partial)
     if args.command == "changes":
         return changes(args.old, args.new, args.out)
+    if args.command == "precision":
+        return precision(args.configfile, args.runs, args.cores, args.check)
     if args.command == "findings":
         return findings(args.release, args.readme, args.template, args.check)
     return release(args.build, args.to, args.force)

@@ -271,7 +271,9 @@ def write_csv(df: pd.DataFrame, path, digits: int = SIGNIFICANT_DIGITS, precisio
     that replaces it only once complete: an interrupted run leaves no half-written table.
     """
     from .pipeline import atomic_output
+    from .precision import precision_for
 
+    digits, precision = precision_for(df, path, digits, precision)
     text = csv_text(df, digits, precision)
     with atomic_output(path) as tmp:
         tmp.write_text(text, encoding="utf-8", newline="")

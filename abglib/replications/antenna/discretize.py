@@ -12,6 +12,7 @@ import numpy as np
 import scipy.linalg
 
 from ..._checks import AbglibValueError, check_positive
+from ..._perturb import perturb
 
 __all__ = ["zoh"]
 
@@ -41,6 +42,8 @@ def zoh(ac, bc, dt):
             f"ac must be square (n, n) and bc (n, m), got shapes {ac.shape} and {bc.shape}"
         )
     dt = float(check_positive("dt", dt))
+    # perturbed arithmetic (ABGLIB_PERTURB, abglib._perturb): a no-op in a plain build
+    ac, bc, dt = perturb(ac), perturb(bc), perturb(dt)
     m = bc.shape[1]
     big = np.zeros((n + m, n + m))
     big[:n, :n] = ac

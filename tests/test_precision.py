@@ -1,0 +1,167 @@
+"""Perturbed arithmetic (abglib._perturb) and the precision derived from it
+(abglib.reporting.precision): every spec checked against values made by hand."""
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import abglib
+from abglib._checks import AbglibValueError
+from abglib._perturb import ENV, RELATIVE, perturb, perturbation_seed
+from abglib.reporting import precision as prec
+from abglib.reporting.compare import csv_text, format_cell
+from abglib.reporting.verify import cell_agrees
+
+
+# --------------------------------------------------------------------------- perturbation
+def test_perturbation_is_small_idempotent_and_keeps_special_values():
+    x = np.array([0.5, 0.1, -3.3, 1e300, 0.0, -0.0, 5e-324, np.inf, -np.inf, np.nan])
+    for k in (1, 2, 7):
+        y = perturb(x, k)
+        rel = np.abs(y[:4] / x[:4] - 1)
+        assert (rel <= RELATIVE).all() and (rel > 0).any()
+        assert np.array_equal(np.sign(y[:4]), np.sign(x[:4]))
+        np.testing.assert_array_equal(y[4:], x[4:])  # zeros, a subnormal, infinities, NaN
+        np.testing.assert_array_equal(perturb(y, k), y)  # idempotent
+    assert not np.array_equal(perturb(x, 1)[:4], perturb(x, 2)[:4])  # seeds differ
+
+
+def test_plain_arithmetic_is_untouched(monkeypatch):
+    monkeypatch.delenv(ENV, raising=False)
+    x = np.linspace(0.1, 1.0, 7)
+    assert perturb(x) is x and perturb(0.3) == 0.3
+    monkeypatch.setenv(ENV, "0")
+    assert perturb(x) is x
+
+
+@pytest.mark.parametrize("bad", ["-1", "x", "1.5", "2147483648"])
+def test_bad_seed_is_refused_naming_the_value(monkeypatch, bad):
+    monkeypatch.setenv(ENV, bad)
+    with pytest.raises(AbglibValueError, match=rf"{ENV} must be a whole number.*{bad!r}"):
+        perturbation_seed()
+
+
+def test_perturbed_build_moves_gains_and_tracks_by_round_off(monkeypatch):
+    """Gains and track() take the perturbation (the chokepoints of every table), and a
+    Gains rebuilt from another's arrays keeps its (perturbed) values."""
+    z = np.cumsum(np.random.default_rng(1).normal(size=500))
+    plain = abglib.track(z, abglib.Gains(0.5, 0.2), dt=0.1).x_smooth
+    monkeypatch.setenv(ENV, "3")
+    g = abglib.Gains(np.array([0.5, 0.4]), np.array([0.2, 0.1]))
+    assert 0 < abs(g.alpha[0] - 0.5) <= 0.5 * RELATIVE
+    assert g[0] == abglib.Gains(g.alpha[0], g.beta[0])
+    moved = abglib.track(z, abglib.Gains(0.5, 0.2), dt=0.1).x_smooth
+    dev = np.max(np.abs(moved - plain) / np.maximum(np.abs(plain), 1.0))
+    assert 0 < dev < 1e-11
+
+
+# --------------------------------------------------------------------------- specs
+def _runs(x, *deltas):
+    x = np.asarray(x, float)
+    return np.array([x, *(x + np.asarray(d, float) for d in deltas)])
+
+
+def test_column_that_keeps_every_digit_gets_no_spec():
+    assert prec.column_spec(_runs([1.0, 2.5], [0, 0])) is None
+    assert prec.column_spec(_runs([1.0, 2.5], [1e-15, 0])) is None  # keeps 14 > 10 digits
+
+
+def test_digits_follow_the_deviation():
+    # deviation 1e-9 on 1.0, times the safety 10: one unit of the last digit must be
+    # >= 2e-8; 8 digits have a unit of 1e-7, 9 digits 1e-8 < 2e-8
+    assert prec.column_spec(_runs([1.0, 3.0], [1e-9, 0])) == 8
+    # no more digits than the config writes anyway: no spec needed
+    assert prec.column_spec(_runs([1.0, 3.0], [1e-9, 0]), cap=5) is None
+
+
+def test_round_off_cells_get_a_bound_above_them():
+    # a residual that is zero in exact arithmetic next to values with full digits
+    spec = prec.column_spec(_runs([1.19e-12, 0.25, 3.0], [4e-14, 0, 0]))
+    assert spec == "<1e-11:10"
+    # every cell round-off: the bound alone
+    assert prec.column_spec(_runs([1e-15, -3e-16], [2e-15, 1e-16])) == "<1e-13"
+
+
+def test_bound_moves_up_until_no_cell_sits_within_its_deviation_of_it():
+    # a noise cell puts the bound at 1e-11; a value at 1.0000001e-11 that moves by 1e-15
+    # (x10 safety) is within its deviation of it, so the bound goes to 1e-10
+    spec = prec.column_spec(_runs([1e-12, 1.0000001e-11, 1.0], [5e-13, 1e-15, 0]))
+    assert spec.startswith("<1e-10:")
+
+
+def test_a_cell_empty_in_some_runs_only_cannot_be_reproduced():
+    with pytest.raises(AbglibValueError, match="empty in some runs only"):
+        prec.column_spec(np.array([[1.0, np.nan], [1.0, 2.0]]))
+
+
+def test_written_numbers_verify_against_the_perturbed_ones():
+    """The property the spec exists for: write the plain and the perturbed values at the
+    derived spec, and every pair agrees as `abglib verify` judges it."""
+    rng = np.random.default_rng(5)
+    for _ in range(200):
+        x = rng.normal(size=20) * 10.0 ** rng.integers(-14, 6, size=20)
+        noise = 10.0 ** rng.uniform(-16, -8) * rng.normal(size=(4, 20)) * np.abs(x)
+        noise[:, :3] = 10.0 ** rng.uniform(-16, -12) * rng.normal(size=(4, 3))
+        x[:3] = 10.0 ** rng.uniform(-16, -13, size=3)  # round-off cells
+        runs = np.vstack([x, x + noise[:3]])
+        spec = prec.column_spec(runs[:3])  # derived from two perturbed runs
+        if spec is None:
+            spec = 10
+        other = runs[3]  # a run the spec was not derived from
+        for a, b in zip(runs[0], other, strict=True):
+            assert cell_agrees(format_cell(a, spec), format_cell(b, spec))[0], (a, b, spec)
+
+
+def test_stricter_and_merge():
+    assert prec.stricter(6, 4) == 4
+    assert prec.stricter("<1e-12", 5) == "<1e-12:5"
+    assert prec.stricter("<1e-12:8", "<1e-10:9") == "<1e-10:8"
+    assert prec.stricter(None, "<1e-12") == "<1e-12"
+    merged = prec.merge_specs({"a/t": {"x": 7}}, {"a/t": {"x": "<1e-13:9", "y": 4}})
+    assert merged == {"a/t": {"x": "<1e-13:7", "y": 4}}
+    with pytest.raises(AbglibValueError, match="must start with '<'"):
+        prec.stricter("1e-12", 3)
+
+
+def test_precision_for_merges_declared_and_derived(monkeypatch):
+    monkeypatch.setattr(prec, "_derived", lambda: {"doc/t": {"x": 6, "y": "<1e-12:12"}})
+    df = pd.DataFrame({"x": [1.0], "y": [2.0], "z": [3.0]})
+    df.attrs["precision"] = {"z": 4, "x": 8}
+    digits, spec = prec.precision_for(df, "results/doc/t.csv", 10)
+    assert digits == 10 and spec == {"x": 6, "y": "<1e-12:10", "z": 4}
+    monkeypatch.setenv(prec.RAW_ENV, "1")
+    assert prec.precision_for(df, "results/doc/t.csv", 10) == (prec.RAW_DIGITS, {})
+    monkeypatch.setenv(prec.RAW_ENV, "yes")
+    with pytest.raises(AbglibValueError, match="must be 0 or 1"):
+        prec.precision_for(df, "results/doc/t.csv", 10)
+
+
+def test_raw_table_round_trips_every_float(monkeypatch):
+    x = np.array([0.1 + 0.2, 1 / 3, 2.0**-40])
+    text = csv_text(pd.DataFrame({"x": x}), prec.RAW_DIGITS)
+    assert [float(v) for v in text.split()[1:]] == list(x)
+
+
+def test_derive_folders_finds_specs_and_moved_text(tmp_path):
+    rows = {
+        0: "x,n,note\n1.0,3,same\n1.19e-12,4,largest 3e-14\n",
+        1: "x,n,note\n1.0,3,same\n1.21e-12,4,largest 4e-14\n",
+    }
+    for k, text in rows.items():
+        (tmp_path / f"r{k}" / "doc").mkdir(parents=True)
+        (tmp_path / f"r{k}" / "doc" / "t.csv").write_text(text, encoding="utf-8")
+    d = prec.derive_folders(tmp_path / "r0", [tmp_path / "r1"])
+    # 1.0 keeps every digit, 1.19e-12 is round-off (moved by 2e-14)
+    assert d.specs() == {"doc/t": {"x": "<1e-11:10"}}
+    assert d.text_differences == [("doc/t.csv", 2, "note", "largest 3e-14", "largest 4e-14")]
+    assert d.problems == []
+
+
+def test_the_generated_table_names_real_columns():
+    """Every spec of the committed table parses (a hand edit that breaks one fails here)."""
+    from abglib.reporting._precision_table import PRECISION
+
+    for key, cols in PRECISION.items():
+        assert key.count("/") == 1, key
+        for col, spec in cols.items():
+            prec.stricter(spec, spec)  # raises on a malformed spec
