@@ -553,3 +553,65 @@ def test_study_means_are_the_pivots_of_the_long_table_bit_for_bit(study):
         got = study.m5_bank[study.m5_bank["K"] == k]
         assert list(zip(got["noise"], got["coord"], strict=True)) == list(g.index)
         np.testing.assert_array_equal(got["M5"].to_numpy(), g.to_numpy())
+
+
+# --------------------------------------------------------------------------- added in v0.4.0
+def bb_closed_forms(a, b):
+    """Benedict and Bordner's closed forms (T = 1), typed: the one-step prediction's noise
+    variance ratio and the summed squared prediction errors after a unit velocity step."""
+    den = a * (4 - 2 * a - b)
+    return (2 * a * a + a * b + 2 * b) / den, (2 - a) / (b * den)
+
+
+@claim_test(DOC, "claim.eq23b_benedict_bordner")
+def test_claim_eq23b_benedict_bordner(study):
+    def jac_det(a, b, h=1e-6):
+        # d(V, D)/d(alpha, beta): zero where no step lowers both (the optimal locus)
+        va = [(f(a + h, b) - f(a - h, b)) / (2 * h) for f in (_v, _d)]
+        vb = [(f(a, b + h) - f(a, b - h)) / (2 * h) for f in (_v, _d)]
+        return (va[0] * vb[1] - va[1] * vb[0]) / (abs(va[0] * vb[1]) + abs(va[1] * vb[0]))
+
+    def _v(a, b):
+        return bb_closed_forms(a, b)[0]
+
+    def _d(a, b):
+        return bb_closed_forms(a, b)[1]
+
+    for a in (0.1, 0.3, 0.6, 0.9):
+        b = a * a / (2 - a)
+        assert abs(jac_det(a, b)) < 1e-7  # on eq 23b
+        assert abs(jac_det(a, 1.1 * b)) > 1e-3 and abs(jac_det(a, 0.9 * b)) > 1e-3
+    t = study.benedict_bordner_optima
+    for lam, a, b in zip(t["weight"], t["alpha"], t["beta"], strict=True):
+        # the study's minimiser is stationary for the closed-form criterion too
+        def j(a_, b_, lam=lam):
+            v, d = bb_closed_forms(a_, b_)
+            return v + lam * d
+
+        h = 1e-6
+        grad = [(j(a + h, b) - j(a - h, b)) / (2 * h), (j(a, b + h) - j(a, b - h)) / (2 * h)]
+        assert np.max(np.abs(grad)) < 1e-4 * j(a, b)
+        assert b == pytest.approx(a * a / (2 - a), rel=1e-6)
+    assert t["alpha"].is_monotonic_increasing and 0.2 < t["alpha"].min() < t["alpha"].max() < 1
+    assert CLAIMS.compute(study, "claim.eq23b_benedict_bordner").value is True
+
+
+@claim_test(DOC, "claim.eq24_n2_is_eq9_10")
+def test_claim_eq24_n2_is_eq9_10(study):
+    z, T = [2.0, 7.0, 9.0, 15.0], 0.5
+    # eqs 3, 6, 8 typed, eq 24 typed, from a zero state: x_p(1) = 0, v_s(0) = 0
+    xp, vs, preds = 0.0, 0.0, []
+    for n, zm in enumerate(z, start=1):
+        a, b = 2 * (2 * n - 1) / (n * (n + 1)), 6 / (n * (n + 1))
+        preds.append(xp)
+        e = zm - xp
+        xs, vs = xp + a * e, vs + b / T * e
+        if n == 2:
+            assert (a, b) == (1.0, 1.0)
+            assert vs == pytest.approx((z[1] - z[0]) / T)  # eq 9
+        xp = xs + T * vs
+    assert preds[2] == pytest.approx(z[1] + T * (z[1] - z[0]) / T)  # eq 10: 12.0
+    assert preds[2] == 12.0
+    # and the next one is the least-squares line through z(1..3), extrapolated (eq 24, n = 3)
+    assert preds[3] == pytest.approx(np.polyval(np.polyfit(np.arange(3) * T, z[:3], 1), 3 * T))
+    assert CLAIMS.compute(study, "claim.eq24_n2_is_eq9_10").value is True

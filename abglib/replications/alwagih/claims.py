@@ -126,6 +126,7 @@ def _t3456(s, key):
                 f"the same formula on Table {src} entries anywhere inside their printed rounding",
                 float(np.clip(printed, r["low"], r["high"])),
                 CONSISTENCY_SECTION,
+                family="typo:rounded intermediate (the source table's printed entries)",
             ),
         ),
     )
@@ -524,4 +525,58 @@ def _p_suggested_better(s, key):
             if not lost
             else "not better: " + "; ".join(lost)
         ),
+    )
+
+
+# --------------------------------------------------------------------------- added in v0.4.0
+@CLAIMS.claim("claim.eq23b_benedict_bordner")
+def _eq23b_bb(s):
+    """Section 5.1: eq 23b is Benedict and Bordner's relation, i.e. the locus of the
+    minimisers of their criterion (the study's ``benedict_bordner_optima``)."""
+    t = s.benedict_bordner_optima
+    worst = float(np.max(np.abs(t["rel_gap"])))
+    return Result(
+        bool(np.isfinite(worst) and worst < 1e-6),
+        "minimisers of VRF_pred + lambda x (summed squared prediction errors after a unit "
+        "velocity step), Nelder-Mead over (alpha, beta): "
+        + ", ".join(
+            f"lambda {w:g}: alpha {a:.4f}, beta {b:.5f} (eq 23b {b23:.5f})"
+            for w, a, b, b23 in zip(
+                t["weight"], t["alpha"], t["beta"], t["beta_eq23b"], strict=True
+            )
+        )
+        + f"; largest relative gap to eq 23b {worst:.1g} (the optimiser's tolerance 1e-6)",
+    )
+
+
+@CLAIMS.claim("claim.eq24_n2_is_eq9_10")
+def _eq24_n2(s):
+    """Eq 24 at n = 2 (the paper states it for n > 2) against the start of eqs 9-10."""
+    from ...design import growing_memory
+    from ...engine import track
+
+    g2 = growing_memory(1, start=2)
+    a2, b2 = float(g2.alpha[0]), float(g2.beta[0])
+    rng = np.random.default_rng(int(s.cfg["stability_seed"]) + 2)
+    z = rng.normal(0.0, 100.0, (8, 6))
+    errs = []
+    for dt in (1.0, 0.5):
+        gm = growing_memory(z.shape[-1])
+        # eq 24 from n = 1 (alpha = 1, beta = 3) on a zero state, and the two-point start
+        # of eqs 9-10 followed by eq 24 from n = 3: the same predictions, states from n = 2
+        zero = track(z, gm, dt=dt)
+        two = track(z, gm, dt=dt, init="two_point")
+        v2 = (z[:, 1] - z[:, 0]) / dt  # eq 9
+        xp3 = z[:, 1] + dt * v2  # eq 10
+        errs += [
+            np.max(np.abs(zero.v_smooth[:, 1] - v2)),
+            np.max(np.abs(zero.x_pred[:, 2] - xp3)),
+            np.max(np.abs(zero.x_pred[:, 2:] - two.x_pred[:, 2:])),
+        ]
+    err = float(max(errs))
+    return Result(
+        bool(a2 == 1.0 and b2 == 1.0 and err < 1e-9),
+        f"eq 24 at n = 2: alpha = {a2:g}, beta = {b2:g}; run from a zero state (T = 1 and 0.5 s, "
+        f"8 random series) it leaves v_s(2) = (x_m(2) - x_m(1))/T and x_p(3) = x_m(2) + T v_s(2) "
+        f"of eqs 9-10 and the same later predictions as the two-point start, to {err:.1g} m",
     )

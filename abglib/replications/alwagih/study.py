@@ -599,6 +599,53 @@ class AlwagihStudy(Study):
         }
         return pd.DataFrame({"name": list(items), "value": [float(v) for v in items.values()]})
 
+    #: Weights of the transient term in Benedict and Bordner's criterion (below): they
+    #: put the optimal alpha between about 0.2 and 0.95, the span of eq 23a's (0, 1].
+    BB_WEIGHTS = (1e-3, 1e-2, 0.1, 1.0, 10.0)
+
+    @cached_property
+    def benedict_bordner_optima(self) -> pd.DataFrame:
+        """Minimisers of Benedict and Bordner's criterion against eq 23b (seed 001, §5.1).
+
+        For each weight ``lam`` of :data:`BB_WEIGHTS`, the gains ``(alpha, beta)``
+        minimising ``VRF_pred + lam * D2`` - the steady-state variance of the one-step
+        prediction per unit noise variance (:func:`abglib.analysis.vrf`, Lyapunov) plus
+        ``lam`` times the sum of squared prediction errors after a unit velocity step
+        (``abglib.track`` on the ramp ``z_n = n`` from a zero state, T = 1) - found by
+        Nelder-Mead over the stability region, and the beta of eq 23b at that alpha.
+        The criterion is the one of the reference the paper cites for eq 23b (Benedict
+        and Brodner [1962]); the paper itself says only "the mean square error".
+        """
+        from scipy.optimize import minimize
+
+        from ...analysis import is_stable, vrf
+        from ...gains import Gains
+
+        ramp = np.arange(500, dtype=float)  # the slowest transient (|pole| <= 0.89) is gone
+
+        def cost(p, lam):
+            g = Gains(float(p[0]), float(p[1]))
+            if not (0.0 < p[0] < 2.0 and p[1] > 0.0) or not is_stable(g):
+                return np.inf
+            err = ramp - track(ramp, g, outputs=("x_pred",)).x_pred
+            return float(vrf(g)["x_pred"]) + lam * float(np.sum(err**2))
+
+        rows = []
+        for lam in self.BB_WEIGHTS:
+            r = minimize(
+                cost,
+                [0.5, 0.2],
+                args=(lam,),
+                method="Nelder-Mead",
+                options={"xatol": 1e-10, "fatol": 1e-14, "maxiter": 4000},
+            )
+            a, b = (float(v) for v in r.x)
+            b23 = float(design.benedict_bordner(a).beta) if a <= 1.0 else np.nan
+            rows.append(
+                {"weight": lam, "alpha": a, "beta": b, "beta_eq23b": b23, "rel_gap": b / b23 - 1}
+            )
+        return pd.DataFrame(rows)
+
     def tables(self) -> dict[str, pd.DataFrame]:
         one = self.all_rmse[self.all_rmse["run"] == int(self.cfg["realisation"])]
         real_all = _wide(one, "rmse")[list(METHODS)]
