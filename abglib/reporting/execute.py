@@ -213,8 +213,9 @@ def _shell_class():
         return _SHELL
     from IPython.core.displayhook import DisplayHook
     from IPython.core.displaypub import DisplayPublisher
-    from IPython.core.interactiveshell import InteractiveShell
     from traitlets import Type
+
+    from .._compat.ipython import error_routing_shell
 
     class Publisher(DisplayPublisher):
         """``display(...)`` → a ``display_data`` output (ipykernel's ZMQDisplayPublisher)."""
@@ -256,13 +257,13 @@ def _shell_class():
                 self.shell.recorder.add(from_dict(out))
             self.bundle = None
 
-    class NotebookShell(InteractiveShell):
+    class NotebookShell(error_routing_shell()):
         """An IPython shell whose outputs become nbformat outputs of the current cell."""
 
         display_pub_class = Type(Publisher)
         displayhook_class = Type(Hook)
 
-        def _showtraceback(self, etype, evalue, stb):
+        def show_error(self, etype, evalue, stb):
             out = {
                 "output_type": "error",
                 "ename": str(etype.__name__),
@@ -287,14 +288,16 @@ def _no_input(*args, **kwargs):
 
 
 def _new_shell():
-    """A fresh shell: no history file, plain-text tracebacks, ``input()`` refused."""
+    """A fresh shell: no history file, plain-text tracebacks, no exit handler (which
+    would keep it and the notebook's namespace alive until the process ends)."""
     from traitlets.config import Config
+
+    from .._compat.ipython import without_exit_handlers
 
     config = Config()
     config.HistoryManager.enabled = False
-    shell = _shell_class()(config=config, colors="nocolor")
+    shell = without_exit_handlers(_shell_class(), config=config, colors="nocolor")
     shell.recorder = _Recorder()
-    shell.builtin_trap.auto_builtins["input"] = _no_input
     # a pyplot figure shown with display(fig) is a PNG, as with the inline backend
     png = shell.display_formatter.formatters["image/png"]
     png.for_type_by_name("matplotlib.figure", "Figure", _figure_png)
@@ -349,17 +352,18 @@ def _pandas_as_in_a_kernel():
     imported outside IPython, as in the process calling us.
     """
     import pandas as pd
-    from pandas._config import config as cf
 
-    keys = [k for k in cf._registered_options if k not in cf._deprecated_options]
-    saved = {k: pd.get_option(k) for k in keys}
+    from .._compat.pandas import option_defaults
+
+    defaults = option_defaults()
+    saved = {k: pd.get_option(k) for k in defaults}
 
     def put(values):
         for k, v in values.items():
             if pd.get_option(k) != v:
                 pd.set_option(k, v)
 
-    put({k: cf._registered_options[k].defval for k in keys} | {"display.max_columns": 20})
+    put(defaults | {"display.max_columns": 20})
     try:
         yield
     finally:
@@ -405,20 +409,6 @@ def _figure_numbers() -> list:
 
 
 @contextmanager
-def _current(shell):
-    """Make ``shell`` the process's IPython (``get_ipython()``, ``display``) while in use."""
-    classes = list(type(shell)._walk_mro())
-    saved = {c: c.__dict__.get("_instance") for c in classes}
-    for c in classes:
-        c._instance = shell
-    try:
-        yield
-    finally:
-        for c, inst in saved.items():
-            c._instance = inst
-
-
-@contextmanager
 def _isolated(cwd):
     """Everything a notebook may change in the process, put back afterwards."""
     cwd = Path(cwd).resolve()
@@ -428,6 +418,7 @@ def _isolated(cwd):
         stack.enter_context(warnings.catch_warnings())
         stack.enter_context(_restored_dict(os.environ))
         stack.enter_context(_restored_dict(builtins.__dict__))
+        builtins.input = _no_input  # no stdin, as ipykernel's raw_input without a frontend
         # IPython makes the notebook's namespace ``__main__``; modules imported meanwhile stay
         stack.callback(sys.modules.__setitem__, "__main__", sys.modules.get("__main__"))
         names = ("stdin", "stdout", "stderr", "displayhook", "excepthook", "ps1", "ps2")
@@ -521,7 +512,7 @@ def execute_notebook(nb, *, cwd=".", timeout: float | None = 600):
     CellTimeoutError
         A cell ran longer than ``timeout``.
     """
-    import atexit
+    from .._compat.ipython import current_shell
 
     if timeout is not None and not timeout >= 0:
         raise ValueError(f"timeout must satisfy timeout >= 0 (or be None), got {timeout!r}")
@@ -529,11 +520,10 @@ def execute_notebook(nb, *, cwd=".", timeout: float | None = 600):
         shell = _new_shell()
         open_before = set(_figure_numbers())
         try:
-            with _current(shell):
+            with current_shell(shell):
                 _run_cells(shell, nb, timeout, open_before)
         finally:
             # (not shell.atexit_operations(): its reset runs a full gc.collect)
-            atexit.unregister(shell.atexit_operations)
             shell.user_ns.clear()
     nb.metadata["language_info"] = dict(_LANGUAGE_INFO, version=platform.python_version())
     return nb

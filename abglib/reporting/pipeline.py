@@ -303,18 +303,27 @@ def atomic_output(path):
 
 def made_by(workflow, paths) -> dict[str, tuple[str, str]]:
     """``{file name: (rule, script)}``: the rule of ``workflow`` that writes each path and
-    its script relative to the repository (showyourwork-style captions)."""
+    its script relative to the repository (showyourwork-style captions). The rules are
+    read through :mod:`abglib._compat.snakemake` (Snakemake has no public API for it)."""
+    from .._compat.snakemake import (
+        rule_params,
+        rule_produces,
+        rule_script,
+        rule_snakefile,
+        rules_of,
+    )
+
     out = {}
     for path in paths:
-        for r in workflow.rules:
-            if r.name.endswith("_report") or not r.is_producer(path):
+        for r in rules_of(workflow):
+            if r.name.endswith("_report") or not rule_produces(r, path):
                 continue
             script = ""
-            if r.script:
-                full = Path(r.snakefile).parent / r.script
+            if rule_script(r):
+                full = Path(rule_snakefile(r)).parent / rule_script(r)
                 script = Path(os.path.relpath(os.path.normpath(full), workflow.basedir)).as_posix()
-            elif isinstance(getattr(getattr(r, "params", None), "script", None), str):
-                script = r.params.script  # a run: rule's script (run_script, common.smk)
+            elif isinstance(getattr(rule_params(r), "script", None), str):
+                script = rule_params(r).script  # a run: rule's script (run_script, common.smk)
             out[Path(path).name] = (r.name, script)
             break
     return out

@@ -35,6 +35,7 @@ from matplotlib.colors import to_rgb  # noqa: E402
 from matplotlib.ticker import Locator, LogLocator  # noqa: E402
 from matplotlib.transforms import Bbox  # noqa: E402
 
+from .._compat.matplotlib import axes_titles  # noqa: E402
 from .pngmeta import png_description  # noqa: E402  (re-exported)
 
 __all__ = [
@@ -373,9 +374,9 @@ def cut_off(fig, redraw: bool = True) -> list:
         texts += leg.get_texts()
     figs = [fig, *getattr(fig, "subfigs", [])]
     for f in figs:
-        texts += list(f.texts) + [getattr(f, "_suptitle", None)]
+        texts += list(f.texts)  # a suptitle is one of them (Figure.suptitle adds it there)
     for ax in fig.axes:
-        texts += [ax.title, ax._left_title, ax._right_title, ax.xaxis.label, ax.yaxis.label]
+        texts += [*axes_titles(ax), ax.xaxis.label, ax.yaxis.label]
         texts += [t for t in ax.texts if not t.get_clip_on()]
     for t in texts:
         if t is None or not t.get_visible() or not t.get_text():

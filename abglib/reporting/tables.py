@@ -45,8 +45,9 @@ def _blank(value) -> bool:
 
 def cell_strings(df: pd.DataFrame) -> list[list[str]]:
     """Every cell of ``df`` as text, column by column formatted as pandas displays it
-    (``display.precision``), with empty, ``NaN`` and ``<NA>`` cells blank."""
-    from pandas.io.formats.format import format_array
+    (``display.precision``), with empty, ``NaN`` and ``<NA>`` cells blank (pandas'
+    formatter, through :func:`abglib._compat.pandas.format_column`)."""
+    from .._compat.pandas import format_column
 
     digits = pd.get_option("display.precision")
     cols = []
@@ -56,7 +57,7 @@ def cell_strings(df: pd.DataFrame) -> list[list[str]]:
         if pd.api.types.is_bool_dtype(values) or values.dtype == object:
             text = ["" if _blank(v) else str(v) for v in raw]
         else:
-            formatted = format_array(values._values, None, na_rep="", digits=digits)
+            formatted = format_column(values, digits, na_rep="")
             text = ["" if _blank(v) else s.strip() for v, s in zip(raw, formatted, strict=True)]
         cols.append(text)
     return [list(r) for r in zip(*cols, strict=True)] if cols else [[] for _ in range(len(df))]

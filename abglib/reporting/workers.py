@@ -86,10 +86,11 @@ _CONTEXT_LOCK = threading.Lock()
 def script_object(
     input, output, params, wildcards, threads, resources, log, config, rule, scriptdir
 ):
-    """The ``snakemake`` object a script sees, as Snakemake's ``script:`` builds it."""
-    from snakemake.iocontainers import Snakemake
+    """The ``snakemake`` object a script sees, as Snakemake's ``script:`` builds it
+    (:func:`abglib._compat.snakemake.script_object_class`)."""
+    from .._compat.snakemake import script_object_class
 
-    return Snakemake(
+    return script_object_class()(
         input, output, params, wildcards, threads, resources, log, config, rule, 0, scriptdir
     )
 

@@ -6,6 +6,7 @@ from pathlib import Path
 
 import abglib
 from abglib import AbglibValueError
+from abglib._compat import snakemake as smk_compat
 from abglib.reporting.codehash import code_hash
 from abglib.reporting.pipeline import prepend_pythonpath, validate_config
 from abglib.reporting.workers import run_script as run_in_worker, script_object, warm_up
@@ -19,7 +20,7 @@ CONFIG_SCHEMA = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema
 # snakemake.utils.validate's check and defaults, with the schema parsed by libyaml
 # (abglib.reporting.pipeline.validate_config: ~0.15 s less on every run); skipped, as
 # validate skips it, where a workflow using this one as a module says skip_validation
-if not getattr(workflow.modifier, "skip_validation", False):
+if not smk_compat.skip_validation(workflow):
     try:
         validate_config(config, CONFIG_SCHEMA)
     except AbglibValueError as err:
@@ -99,10 +100,9 @@ def script_params(script, *sources, extra=()):
 
 def jobs_run_here():
     """Whether this Snakemake process runs the jobs itself (a local build), so that their
-    scripts go to the warm worker; a cluster's jobs run in processes of their own."""
-    return workflow.local_exec and not (
-        workflow.remote_exec or workflow.subprocess_exec
-    )
+    scripts go to the warm worker; a cluster's jobs run in processes of their own
+    (abglib._compat.snakemake.jobs_run_here: Snakemake has no public flag for it)."""
+    return smk_compat.jobs_run_here(workflow)
 
 
 def without_rate_limit():
@@ -118,10 +118,12 @@ def without_rate_limit():
     holds the GIL, costing Snakemake's own process 10-20 s of CPU next to the jobs'.
     Without the limit a round runs when a job ends, as before Snakemake 8.17 introduced it.
     A cluster build (jobs_run_here() false) keeps it: there it paces ``sbatch``.
+
+    Snakemake has no option for "no limit": this sets an internal of its scheduler
+    (abglib._compat.snakemake.disable_job_rate_limit), which raises naming the Snakemake
+    version if the attribute has moved, rather than going quiet.
     """
-    scheduler = getattr(workflow, "scheduler", None)
-    if getattr(scheduler, "job_rate_limiter", None) is not None:
-        scheduler.job_rate_limiter = None
+    smk_compat.disable_job_rate_limit(workflow)
 
 
 def run_script(input, output, params, wildcards, threads, resources, log, rulename):
