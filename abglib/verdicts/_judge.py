@@ -380,4 +380,3 @@ def _reproduced_value(value, qualitative: bool):
 
 def _text(x) -> str:
     return "" if _is_missing(x) else str(x).strip()
-

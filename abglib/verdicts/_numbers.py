@@ -78,10 +78,12 @@ def reference_span(text: str) -> tuple[float, float]:
 
     The look-elsewhere model of :mod:`abglib.verdicts.readings`: a number unrelated to the
     study, printed with the same precision, is taken as uniform over the printed decade of
-    ``text`` on its side of zero, ``[10^d, 10^(d+1))`` with ``d = floor(log10|p|)``
-    (``'.135'`` → [0.1, 1), ``'1452'`` → [1000, 10000), ``'-3'`` → (-10, -1]); a printed
-    zero spans ``[0, 10 u)`` with ``u`` its unit. The span holds ``9 * 10^(s-1)`` numbers
-    of the printed precision for ``s`` significant digits.
+    ``text`` on its side of zero: the numbers ``10^d, 10^d + u, ..., 10^(d+1) - u`` with
+    ``d = floor(log10|p|)`` and ``u`` the printed unit, each owning the cell of one unit
+    around it, so the span is ``[10^d - u/2, 10^(d+1) - u/2)`` (``'.135'`` →
+    [0.0995, 0.9995), ``'1452'`` → [999.5, 9999.5)); a printed zero spans the numbers
+    ``0 .. 9u``. The span holds ``9 * 10^(s-1)`` numbers of the printed precision for
+    ``s`` significant digits.
 
     Returns
     -------
@@ -90,10 +92,13 @@ def reference_span(text: str) -> tuple[float, float]:
     p = parse_printed(text)
     unit = printed_unit(text)
     if p == 0:
-        return 0.0, 10.0 * unit
-    d = math.floor(math.log10(abs(float(p))))
-    # the printed decade at least one unit wide (a printed '5' spans [1, 10))
-    lo, hi = 10.0**d, 10.0 ** (d + 1)
+        lo, hi = 0.0, 10.0 * unit
+    else:
+        d = math.floor(math.log10(abs(float(p))))
+        lo, hi = 10.0**d, 10.0 ** (d + 1)
+    # each printed number owns the cell of one unit around it: the span of the numbers
+    # 10^d, 10^d + u, ..., 10^(d+1) - u is [10^d - u/2, 10^(d+1) - u/2)
+    lo, hi = lo - unit / 2, hi - unit / 2
     if p < 0:
         lo, hi = -hi, -lo
     return lo, hi

@@ -62,7 +62,14 @@ from typing import Any
 
 import numpy as np
 
-from ._numbers import format_number, parse_printed, printed_unit, reference_span
+from ._numbers import (
+    _TOL_SLACK,
+    format_number,
+    parse_printed,
+    printed_unit,
+    reference_span,
+    tolerance_from_printed,
+)
 
 __all__ = [
     "CLAIM_FAMILIES",
@@ -135,34 +142,36 @@ class Family:
     candidates: Callable[[Row], list[Candidate]]
 
 
-def chance(candidates: Iterable[float], tolerance: float, span: tuple[float, float]) -> float:
+def chance(candidates: Iterable[float], printed: str, tolerance: float | None = None) -> float:
     """Look-elsewhere cost of a set of candidate values (module docstring).
 
-    The measure of the union of the windows ``[c - tolerance, c + tolerance]`` inside
-    ``span = (low, high)``, over ``high - low``: the probability that a number uniform
-    over the span lands within tolerance of some candidate.
+    The fraction of the numbers of the printed precision in the reference span of
+    ``printed`` (:func:`~abglib.verdicts._numbers.reference_span`) that lie within
+    ``tolerance`` (default half a unit in the last printed digit) of some candidate: the
+    probability that a number unrelated to the study, printed like ``printed``, would be
+    reproduced by one of the candidates. For candidates one unit or more apart this is the
+    sum of their tolerance windows inside the span over the span's length.
 
     Examples
     --------
-    >>> chance([0.5], 0.0005, (0.1, 1.0))  # one 3-digit candidate: 1 of 900 numbers
+    >>> chance([0.5], '.135')  # one 3-digit candidate: 1 of the 900 numbers .100 .. .999
     0.0011111111111111111
     """
-    lo, hi = float(span[0]), float(span[1])
-    if not hi > lo:
-        raise ValueError(f"span must satisfy low < high, got {span!r}")
-    t = float(tolerance)
-    windows = sorted(
-        (max(lo, c - t), min(hi, c + t))
-        for c in (float(v) for v in candidates)
-        if math.isfinite(c) and c + t > lo and c - t < hi
-    )
-    covered, end = 0.0, -math.inf
-    for a, b in windows:
-        if b <= end:
+    unit = printed_unit(printed)
+    t = tolerance_from_printed(printed) if tolerance is None else float(tolerance)
+    lo, hi = reference_span(printed)
+    k_lo, k_hi = math.ceil(lo / unit), math.floor(hi / unit)  # the span's numbers k * unit
+    if k_hi * unit >= hi:
+        k_hi -= 1
+    slack = t * _TOL_SLACK
+    hit: set[int] = set()
+    for c in (float(v) for v in candidates):
+        if not math.isfinite(c):
             continue
-        covered += b - max(a, end)
-        end = b
-    return covered / (hi - lo)
+        a = max(k_lo, math.ceil((c - t - slack) / unit))
+        b = min(k_hi, math.floor((c + t + slack) / unit))
+        hit.update(range(a, b + 1))
+    return len(hit) / (k_hi - k_lo + 1)
 
 
 # ----------------------------------------------------------------------- typographic
@@ -176,17 +185,19 @@ def typographic_variants(text: str) -> dict[str, list[tuple[str, str]]]:
     """Every single-slip misprint of a printed number, by kind.
 
     ``{'digit dropped': [(variant, detail), ...], 'digit doubled': ..., 'two digits
-    transposed': ..., 'OCR confusion': ...}``; a variant keeps the printed unit (the
-    decimal point stays under the same digit), ``detail`` says which slip.
+    transposed': ..., 'OCR confusion': ...}``; ``detail`` says which slip. The digit
+    sequence ends at the printed last digit: a transposition or a look-alike keeps the
+    unit of ``text``, a dropped digit ends one place earlier (``'0.1353'`` → ``'0.153'``)
+    and a doubled one a place later (``'0.135'`` → ``'0.1335'``).
     """
     value = parse_printed(text)
     exp = value.as_tuple().exponent
     sign, s = ("-" if value < 0 else ""), str(abs(int(value.scaleb(-exp))))
 
-    def as_text(digits: str) -> str:
+    def as_text(digits: str, shift: int = 0) -> str:
         if not digits:
             return ""
-        return sign + str(Decimal(int(digits)).scaleb(exp))
+        return sign + str(Decimal(int(digits)).scaleb(exp + shift))
 
     out: dict[str, list[tuple[str, str]]] = {
         "digit dropped": [],
@@ -197,9 +208,11 @@ def typographic_variants(text: str) -> dict[str, list[tuple[str, str]]]:
     for i, d in enumerate(s):
         if len(s) > 1:
             out["digit dropped"].append(
-                (as_text(s[:i] + s[i + 1 :]), f"digit {i + 1} ({d}) dropped")
+                (as_text(s[:i] + s[i + 1 :], 1), f"digit {i + 1} ({d}) dropped")
             )
-        out["digit doubled"].append((as_text(s[:i] + d + s[i:]), f"digit {i + 1} ({d}) doubled"))
+        out["digit doubled"].append(
+            (as_text(s[:i] + d + s[i:], -1), f"digit {i + 1} ({d}) doubled")
+        )
         if i + 1 < len(s) and s[i] != s[i + 1]:
             out["two digits transposed"].append(
                 (
@@ -216,18 +229,25 @@ def typographic_variants(text: str) -> dict[str, list[tuple[str, str]]]:
     return {k: [(t, w) for t, w in v if t] for k, v in out.items()}
 
 
-def _rounded_text(row: Row) -> str:
-    """The reproduced value written at the printed precision."""
-    unit = Decimal(10) ** parse_printed(row.printed).as_tuple().exponent
+def _rounded_text(row: Row, shift: int = 0) -> str:
+    """The reproduced value written at the printed precision (``shift`` places finer)."""
+    unit = Decimal(10) ** (parse_printed(row.printed).as_tuple().exponent - shift)
     return str(Decimal(repr(float(row.reproduced))).quantize(unit))
+
+
+# the source digits of a slip: a dropped digit leaves one digit fewer than the author
+# wrote, a doubled one a digit more
+_SHIFT = {"digit dropped": 1, "digit doubled": -1}
 
 
 def _typo(kind: str) -> Callable[[Row], list[Candidate]]:
     def candidates(row: Row) -> list[Candidate]:
-        variants = typographic_variants(_rounded_text(row))[kind]
+        source = _rounded_text(row, _SHIFT.get(kind, 0))
+        if not parse_printed(source):
+            return []
         return [
-            Candidate(f"typo:{kind}", float(parse_printed(t)), f"{w} in {_rounded_text(row)}")
-            for t, w in variants
+            Candidate(f"typo:{kind}", float(parse_printed(t)), f"{w} in {source}")
+            for t, w in typographic_variants(source)[kind]
         ]
 
     candidates.__doc__ = f"typo:{kind} of the reproduced value rounded at the printed digit."
@@ -429,7 +449,6 @@ def explain(row: Row, readings: Iterable = (), within=None) -> Explanation:
 
     within = within or within_tolerance
     pub = float(parse_printed(row.printed))
-    span = reference_span(row.printed)
     generic, specific = [], []
     for fam in (*GENERIC_FAMILIES, *CLAIM_FAMILIES, *_hand_written(readings)):
         cands = [c for c in fam.candidates(row) if math.isfinite(c.value)]
@@ -438,7 +457,7 @@ def explain(row: Row, readings: Iterable = (), within=None) -> Explanation:
     budget_generic = THRESHOLD / max(1, len(generic))
     tried, hits = [], []
     for fam, cands in (*generic, *specific):
-        c = chance([x.value for x in cands], row.tolerance, span)
+        c = chance([x.value for x in cands], row.printed, row.tolerance)
         tried.append((fam.name, c))
         budget = budget_generic if fam.generic else THRESHOLD
         for cand in cands:

@@ -135,6 +135,7 @@ def _memo_ratio(s: FaaBendixStudy, key: str) -> Result:
                 f"{r['best_velocity']:.4f})",
                 float(r[f"best_{k}"]),
                 _ROUNDING,
+                family="typo:rounded intermediate (the memo's rounded gains)",
             ),
         )
     return Result(value, note, readings)
@@ -221,6 +222,7 @@ def _caption_gain(s: FaaBendixStudy, key: str) -> Result:
                 "to the caption's two decimals",
                 float(r[f"{name}_memo_truncated"]),
                 "The gain tables and what their difference does",
+                family="typo:truncated (the memo's gain)",
             ),
         ),
     )

@@ -134,6 +134,7 @@ def _table_cell(s: HuangStudy, key: str) -> Result:
                 f"{r['rule_enbw']:.4g} Hz, not {r['bn_nominal_hz']:g})",
                 float(r[f"rule_{col}"]),
                 _SECTION_TABLES,
+                family="scope:the rule at the printed xi",
             ),
         )
     return Result(float(r[f"nominal_{col}"]), note, readings)
@@ -473,6 +474,7 @@ def _fig4_sigma(s: HuangStudy) -> Result:
                 f"form) at {bn:g} Hz",
                 barton,
                 "6. Thermal-noise error and Figure 4",
+                family="convention:two-sided bandwidth",
             ),
         ),
     )
@@ -491,6 +493,7 @@ def _fig4_limit(s: HuangStudy) -> Result:
                 "the ENBW limit with the two-sided ENBW of eq 8 (= Barton's 2E/N0 form)",
                 float(b7b),
                 "6. Thermal-noise error and Figure 4",
+                family="convention:two-sided bandwidth",
             ),
         ),
     )

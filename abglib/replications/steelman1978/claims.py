@@ -98,7 +98,10 @@ def _t3_exact(s: SteelmanStudy, key: str) -> Result:
         f"the standard α-β-γ tracker (read off Fig. 2?); see '{SEC_T345}'",
         (
             Reading(
-                "ωT where |X̄/X| = 0.5 (−6.02 dB) instead of −6 dB", r["wT_half_exact"], SEC_T345
+                "ωT where |X̄/X| = 0.5 (−6.02 dB) instead of −6 dB",
+                r["wT_half_exact"],
+                SEC_T345,
+                family="convention:half amplitude instead of -6 dB",
             ),
         ),
     )
@@ -164,6 +167,7 @@ def _de_rate(s: SteelmanStudy) -> Result:
                 f"1/T with the printed T = {s.printed('design.T')}",
                 1.0 / s.value("design.T"),
                 SEC_DESIGN,
+                family="typo:rounded intermediate (the printed T)",
             ),
         ),
     )
@@ -183,6 +187,7 @@ def _de_wt60(s: SteelmanStudy) -> Result:
                 f"{s.printed('design.wT_3db')} (the graph reading)",
                 s.design_printed["wT_60Hz"],
                 SEC_DESIGN,
+                family="typo:rounded intermediate (the printed graph reading)",
             ),
         ),
     )
@@ -211,7 +216,10 @@ def _de_omega(s: SteelmanStudy) -> Result:
         s.design_exact["omega_first_max"],
         readings=(
             Reading(
-                f"(2π − d)/T {_printed_d_T(s)}", s.design_printed["omega_first_max"], SEC_DESIGN
+                f"(2π − d)/T {_printed_d_T(s)}",
+                s.design_printed["omega_first_max"],
+                SEC_DESIGN,
+                family="typo:rounded intermediate (the printed d and T)",
             ),
         ),
     )
@@ -223,7 +231,10 @@ def _de_f(s: SteelmanStudy) -> Result:
         s.design_exact["f_first_max_Hz"],
         readings=(
             Reading(
-                f"(2π − d)/(2π T) {_printed_d_T(s)}", s.design_printed["f_first_max_Hz"], SEC_DESIGN
+                f"(2π − d)/(2π T) {_printed_d_T(s)}",
+                s.design_printed["f_first_max_Hz"],
+                SEC_DESIGN,
+                family="typo:rounded intermediate (the printed d and T)",
             ),
         ),
     )
