@@ -325,7 +325,8 @@ def test_captions_table_and_sfy(study):
 # --------------------------------------------------------------------------- the report tables
 def test_verdict_counts(judged):
     counts = judged[0]["verdict"].value_counts().to_dict()
-    assert counts == {"match": 85, "explained": 3, "not_reproducible": 19}
+    # + 1 mismatch in v0.4.0: captions.ramp.T5.predicted_twice (a misprinted caption)
+    assert counts == {"match": 85, "explained": 3, "mismatch": 1, "not_reproducible": 19}
 
 
 def test_gains_table_columns(study):
@@ -376,3 +377,32 @@ def test_lags_closed_form_vs_simulation():
     assert exact["accel_x_smooth"] == pytest.approx(0.47 * 16.0 / 0.431)
     for k, v in exact.items():
         assert sim[k] == pytest.approx(v, abs=1e-6 * max(1.0, abs(v)))
+
+
+# --------------------------------------------------------------------------- added in v0.4.0
+@claim_test(DOC, "captions.ramp.T5.predicted_twice")
+def test_t5_ramp_captions_predicted_twice(study, judged):
+    # independent route: the letter report's three equations typed here, run on its ramp
+    # (0, T, 2T, ... for 10 periods, then 0) at the T = 5 s captions' gains
+    a, b, T = 0.58, 0.56, 5.0
+    z = [k * T for k in range(11)] + [0.0] * 29
+    xp, xd1, out = 0.0, 0.0, {"x_smooth": [], "v_smooth": [], "x_pred": []}
+    for xk in z:
+        xb = xp + a * (xk - xp)
+        xd = xd1 + (b / T) * (xk - xp)
+        out["x_pred"].append(xp)
+        out["x_smooth"].append(xb)
+        out["v_smooth"].append(xd)
+        xp, xd1 = xb + T * xd, xd
+    out = {k: np.array(v) for k, v in out.items()}
+    # the three graphs of one run are three different curves: no two are the same output
+    for p, q in (("x_pred", "v_smooth"), ("x_pred", "x_smooth"), ("x_smooth", "v_smooth")):
+        assert np.max(np.abs(out[p] - out[q])) > 10.0
+    # on the printed SFY = 10 grid the velocity graph stays within about half a division
+    assert 0.4 < np.max(np.abs(out["v_smooth"])) / 10.0 < 0.6
+    assert 5.0 < np.max(np.abs(out["x_pred"])) / 10.0 < 6.0
+    res = CLAIMS.compute(study, "captions.ramp.T5.predicted_twice")
+    assert res.value is False
+    assert f"{np.max(np.abs(out['v_smooth'])) / 10.0:.2f} divisions" in res.note
+    row = judged[0].loc["captions.ramp.T5.predicted_twice"]
+    assert row["verdict"] == "mismatch" and "SMOOTHED VELOCITY graph" in row["note"]

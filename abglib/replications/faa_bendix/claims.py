@@ -248,3 +248,36 @@ def _caption_sfy(s: FaaBendixStudy, key: str) -> Result:
         f"scaling is not printed); at the printed SFY the peak is "
         f"{r['input_peak_in_sfy']:.3g} divisions",
     )
+
+
+# --------------------------------------------------------------------------- added in v0.4.0
+@CLAIMS.claim("captions.ramp.T5.predicted_twice")
+def _t5_predicted_twice(s: FaaBendixStudy) -> Result:
+    """The T = 5 s ramp captions print PREDICTED POSITION XP(K) on two of the three
+    graphs and SMOOTHED VELOCITY on none: judged, as the captions literally say, against
+    the program's graphs of one run (graphs 4-6: each ramp output once) and its T = 5 s
+    ramp outputs at the captions' gains."""
+    p = 5
+    sfy = float(s.caption("ramp", p)["sfy"])
+    r = s.responses
+    run = r[(r["table"] == "captions") & (r["period_s"] == p) & (r["input"] == "ramp")]
+    outs = list(bendix.GRAPHS)
+    n_pred = outs.count("x_pred")
+    gaps = {
+        (a, b): float(np.max(np.abs(run[a].to_numpy() - run[b].to_numpy())))
+        for i, a in enumerate(outs)
+        for b in outs[i + 1 :]
+    }
+    peak = {o: float(np.max(np.abs(run[o].to_numpy()))) for o in outs}
+    return Result(
+        n_pred >= 2,
+        f"the program draws each of its {len(outs)} ramp outputs once per run "
+        f"({', '.join(bendix.GRAPHS.values())}) and they differ (smallest largest difference "
+        f"{min(gaps.values()):.3g}), so one of the two PREDICTED POSITION captions labels the "
+        f"SMOOTHED VELOCITY graph: a misprinted caption, not a second X_PK graph. Which one the "
+        f"lost figures do not show; at the printed SFY = {sfy:g} that graph's curve peaks at "
+        f"{peak['v_smooth'] / sfy:.2f} divisions (|X_DKB| <= {peak['v_smooth']:.3g}), the "
+        f"predicted position's at {peak['x_pred'] / sfy:.2f}. The scan's page order points to "
+        f"the first of the two: the ramp captions of the other periods run smoothed "
+        f"position, predicted position, smoothed velocity (cyclically)",
+    )
