@@ -165,3 +165,9 @@ def test_the_generated_table_names_real_columns():
         assert key.count("/") == 1, key
         for col, spec in cols.items():
             prec.stricter(spec, spec)  # raises on a malformed spec
+
+
+def test_table_keys():
+    assert prec.table_key("results/alwagih/table1.csv") == "alwagih/table1"
+    assert prec.table_key("/x/results/benchmark/cells/std_ab/alwagih_w1.csv") == "benchmark/cells"
+    assert prec.table_key("results/benchmark/cells.csv") == "benchmark/cells"

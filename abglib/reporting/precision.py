@@ -74,13 +74,8 @@ SAFETY = 10.0
 #: a cell reproducible to fewer digits than this is round-off, written as a bound
 MIN_DIGITS = 3
 #: Snakemake targets that make every table of a build (no figures, no reports)
-TABLE_TARGETS = (
-    "datasets",
-    "scorecard",
-    "benchmark_league",
-    "benchmark_tradeoff",
-    "benchmark_peers",
-)
+#: (rule ``tables``, workflow/rules/compare.smk; the datasets for their bytes)
+TABLE_TARGETS = ("datasets", "tables")
 
 
 def raw_tables() -> bool:
@@ -93,8 +88,12 @@ def raw_tables() -> bool:
 
 def table_key(path) -> str:
     """The key of a table in the precision table: ``<folder>/<stem>`` of its file
-    (``results/alwagih/table1.csv`` -> ``alwagih/table1``)."""
+    (``results/alwagih/table1.csv`` -> ``alwagih/table1``); one benchmark cell's table
+    (``results/benchmark/cells/<variant>/<scenario>.csv``) has the key of the matrix it
+    is a row of, ``benchmark/cells``, so that a new variant's cells get its precision."""
     p = Path(path)
+    if len(p.parts) >= 4 and p.parts[-3] == "cells":
+        return f"{p.parts[-4]}/cells"
     return f"{p.parent.name}/{p.stem}"
 
 
@@ -277,7 +276,8 @@ class Derivation:
         out: dict[str, dict[str, object]] = {}
         for c in self.columns:
             if c.spec is not None:
-                out.setdefault(c.table, {})[c.column] = c.spec
+                dest = out.setdefault(c.table, {})
+                dest[c.column] = stricter(dest.get(c.column), c.spec)
         return out
 
 
