@@ -18,6 +18,7 @@ non-match numeric row):
                                    :data:`OCR_PAIRS`
 ``typo:sign lost``                 the negated value
 ``typo:truncated``                 truncated, not rounded, at the printed digit
+``typo:double rounding``           rounded at one digit more, then at the printed one
 ``convention:factor 2``            x2 and /2: one- vs two-sided bandwidth, 10 vs 20 log dB
 ``convention:percent vs fraction`` x100 and /100
 ``convention:radians vs degrees``  x180/pi and xpi/180
@@ -57,7 +58,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
-from decimal import Decimal
+from decimal import ROUND_HALF_UP, Decimal
 from typing import Any
 
 import numpy as np
@@ -277,6 +278,20 @@ def _truncated(row: Row) -> list[Candidate]:
     return [Candidate("typo:truncated", t, "truncated instead of rounded")]
 
 
+def _double_rounding(row: Row) -> list[Candidate]:
+    """The reproduced value rounded (half up) at one digit more than printed, then again
+    at the printed digit, when that differs from rounding once (0.1332449 → 0.133245 →
+    0.13325)."""
+    once = _rounded_text(row)
+    exp = parse_printed(row.printed).as_tuple().exponent
+    twice = Decimal(_rounded_text(row, 1)).quantize(Decimal(10) ** exp, rounding=ROUND_HALF_UP)
+    if twice == Decimal(once):
+        return []
+    return [
+        Candidate("typo:double rounding", float(twice), f"{_rounded_text(row, 1)} rounded again")
+    ]
+
+
 def _factors(label: str, factors: Sequence[tuple[float, str]]) -> Callable[[Row], list[Candidate]]:
     def candidates(row: Row) -> list[Candidate]:
         return [Candidate(label, row.reproduced * f, w) for f, w in factors]
@@ -353,6 +368,7 @@ GENERIC_FAMILIES: tuple[Family, ...] = (
     Family("typo:OCR confusion", True, False, _typo("OCR confusion")),
     Family("typo:sign lost", True, False, _sign),
     Family("typo:truncated", True, False, _truncated),
+    Family("typo:double rounding", True, False, _double_rounding),
     Family(
         "convention:factor 2",
         True,
