@@ -19,7 +19,7 @@ import numpy as np
 from ... import methods
 from ...analysis import is_stable
 from ...gains import Gains
-from ...reporting.compare import format_number, parse_printed
+from ...reporting.compare import format_number, parse_printed, roundoff
 from .. import ClaimSet, Reading, Result
 from . import stability
 from .printed import BASES, COMPARED, NOISE_OF_TABLE, PAPER_METHODS, printed_values
@@ -457,7 +457,7 @@ def _eq24(s):
     return Result(
         err < 1e-6,
         f"M2 (eq 24) vs the least-squares line through all earlier samples, 28 steps: "
-        f"largest difference {err:.1g} m",
+        f"largest difference {roundoff(err)} m",
     )
 
 
@@ -491,7 +491,7 @@ def _eq11(s):
     return Result(
         err < 1e-9,
         f"eq 11 against abglib's X_p/X_m (the one-step prediction) on {int(keep.sum())} stable "
-        f"random gain pairs, 64 frequencies: largest difference {err:.1g}",
+        f"random gain pairs, 64 frequencies: largest difference {roundoff(err)}",
     )
 
 
