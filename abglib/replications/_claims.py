@@ -26,10 +26,14 @@ config paths (``antenna.model.beta_a``). Each such input has a *plausible range*
 document's config section (``<doc>.plausible.<dotted path>``: ``values: [...]`` or
 ``low, high, n`` with ``scale: linear|log``, and its ``basis`` in the text).
 :func:`evaluate` recomputes the claim one input at a time over that range (the others at
-their nominal values) and judges each point with the same tolerance. The same verdict
-everywhere gives that verdict with ``robust=true``; a flip gives ``not_reproducible``,
-``robust=false`` and a note with the ranges where each verdict holds
-(``shared/CONTRACTS.md`` section 3).
+their nominal values), at the points of the document's joint design over those inputs
+(corners, or a Latin hypercube when a row has many), and, when the claim's result moves
+with the random seeds (a Monte Carlo result), under every seed set
+(:mod:`abglib.verdicts.robustness`), and judges each point with the same tolerance. The
+same verdict everywhere gives that verdict with ``robust=true``; a flip gives
+``not_reproducible``, ``robust=false`` and a note saying where each verdict holds
+(``shared/CONTRACTS.md`` section 3). A Monte Carlo row's ``depends_on`` ends in
+``seeds``.
 """
 
 from __future__ import annotations
@@ -47,8 +51,9 @@ import pandas as pd
 
 from .._checks import AbglibValueError
 from ..reporting.compare import COMPARISON_COLUMNS, SENTENCE_COLUMN
-from ..verdicts import Alternative, Reading, format_number
+from ..verdicts import Alternative, Reading, format_number, robustness
 from ..verdicts._judge import _assess, judge_sentences
+from ..verdicts.robustness import ROBUSTNESS_COLUMNS
 
 __all__ = [
     "ROBUSTNESS_COLUMNS",
@@ -63,9 +68,6 @@ __all__ = [
     "evaluate",
     "plausible_ranges",
 ]
-
-#: Columns of ``results/<doc>/robustness.csv``: one row per (claim, input, value) point.
-ROBUSTNESS_COLUMNS = ["key", "input", "value", "nominal", "reproduced", "verdict"]
 
 
 # --------------------------------------------------------------------------- results
@@ -419,7 +421,8 @@ def evaluate(
         The study at the nominal configuration (``study.config``).
     make_study : callable
         ``make_study(config)`` builds the study at another configuration (used to
-        recompute claims that depend on assumed inputs, one input at a time).
+        recompute claims at the points of the robustness designs: one input at a time,
+        jointly, and under the seed sets; one study per point, shared by every row).
     overrides : mapping, optional
         ``{key: {"tolerance": float, "reason": str}}`` (``config.yaml``
         ``tolerance_overrides``).
@@ -428,7 +431,13 @@ def evaluate(
     -------
     (comparison, robustness)
         ``comparison.csv`` rows (:data:`~abglib.reporting.compare.COMPARISON_COLUMNS`) and
-        the points of every robustness sweep (:data:`ROBUSTNESS_COLUMNS`).
+        every judged point of every robustness design (:data:`ROBUSTNESS_COLUMNS`).
+
+    Notes
+    -----
+    The designs' sizes come from ``study.config['robustness']``
+    (:func:`abglib.verdicts.robustness.settings`); see that module for the corner,
+    hypercube and seed-shift rules.
     """
     overrides = dict(overrides or {})
     resolved = claims.resolve(published["key"])
@@ -443,13 +452,31 @@ def evaluate(
             f"{doc}: claims depend on inputs without a plausible range in "
             f"config['{doc}']['plausible']: {undeclared}"
         )
-    variants: dict[tuple[str, Any], Any] = {}
+    design = robustness.settings(study.config)
+    joint = robustness.joint_design(ranges, [c.inputs(k) for k, c in resolved.items()], design)
+    seeded = robustness.seed_sets(study.config, doc, design)
+    studies: dict[tuple, Any] = {}
 
-    def variant(name, value):
-        key = (name, _hashable(value))
-        if key not in variants:
-            variants[key] = make_study(config_with(study.config, name, value))
-        return variants[key]
+    def at(values: Mapping[str, Any]):
+        # one study per point off the nominal one, shared by every row and design
+        key = tuple(sorted((n, _hashable(v)) for n, v in values.items()))
+        if not key:
+            return study
+        if key not in studies:
+            studies[key] = make_study(robustness.with_values(study.config, values))
+        return studies[key]
+
+    seed_studies: dict[int, Any] = {}
+
+    def under(k: int):
+        if k not in seed_studies:
+            seed_studies[k] = make_study(seeded[k - 1])
+        return seed_studies[k]
+
+    def judged_at(other_study, pub, claim):
+        r = claim.run(other_study, pub.key)
+        other = _judged(doc, pub, r, overrides).row
+        return r, other["verdict"], other["reproduced"]
 
     rows, points, judged = [], [], []
     for pub in published.itertuples(index=False):
@@ -461,38 +488,75 @@ def evaluate(
         inputs = claim.inputs(pub.key)
         row["depends_on"] = ";".join(inputs)
         row["robust"] = vague
-        if inputs:
-            flips = []
-            for name in inputs:
-                rng = ranges[name]
-                by_value = []
-                for value in rng.values:
-                    if _same(value, rng.nominal):
-                        v, rep = row["verdict"], row["reproduced"]
-                    else:
-                        r = claim.run(variant(name, value), pub.key)
-                        other = _judged(doc, pub, r, overrides).row
-                        v, rep = other["verdict"], other["reproduced"]
-                    by_value.append((value, v))
-                    points.append(
-                        {
-                            "key": pub.key,
-                            "input": name,
-                            "value": _fmt(value),
-                            "nominal": _same(value, rng.nominal),
-                            "reproduced": rep,
-                            "verdict": v,
-                        }
-                    )
-                if len({v for _, v in by_value}) > 1:
-                    flips.append(_describe_flip(rng, by_value))
-            row["robust"] = "false" if flips or vague == "false" else "true"
+        nominal_verdict = row["verdict"]
+
+        def point(design_name, inp, value, nominal, rep, v, key=pub.key):
+            points.append(
+                {
+                    "key": key,
+                    "design": design_name,
+                    "input": inp,
+                    "value": value,
+                    "nominal": nominal,
+                    "reproduced": rep,
+                    "verdict": v,
+                }
+            )
+
+        # one at a time: each input over its grid, the others nominal
+        flips = []
+        for name in inputs:
+            rng = ranges[name]
+            by_value = []
+            for value in rng.values:
+                if _same(value, rng.nominal):
+                    v, rep = nominal_verdict, row["reproduced"]
+                else:
+                    _, v, rep = judged_at(at({name: value}), pub, claim)
+                by_value.append((value, v))
+                point("one_at_a_time", name, _fmt(value), _same(value, rng.nominal), rep, v)
+            if len({v for _, v in by_value}) > 1:
+                flips.append(_describe_flip(rng, by_value))
+        # jointly: the document's design, projected onto the row's inputs
+        by_point, seen = [], set()
+        for p in joint:
+            proj = robustness.project(p, inputs)
+            key = tuple((n, _hashable(v)) for n, v in proj)
+            if len(proj) < 2 or key in seen:
+                continue
+            seen.add(key)
+            _, v, rep = judged_at(at(p.values), pub, claim)
+            by_point.append((proj, v))
+            names = ";".join(n for n, _ in proj)
+            point("joint", names, ";".join(_fmt(x) for _, x in proj), False, rep, v)
+        # seed sets: a row whose result moves under set 1 rests on a Monte Carlo result
+        by_set = []
+        if seeded:
+            r1, v1, rep1 = judged_at(under(1), pub, claim)
+            if robustness.rests_on_chance(res, r1):
+                by_set = [(nominal_verdict, row["reproduced"]), (v1, rep1)]
+                by_set += [judged_at(under(k), pub, claim)[1:] for k in range(2, len(seeded) + 1)]
+                for k, (v, rep) in enumerate(by_set):
+                    point("seed_set", "seeds", str(k), k == 0, rep, v)
+                row["depends_on"] = ";".join([*inputs, "seeds"])
+        if inputs or by_set:
+            parts = []
+            causes = []
             if flips:
-                was = row["verdict"]
+                parts.append(f"one at a time (others nominal): {'; '.join(flips)}")
+            if any(v != nominal_verdict for _, v in by_point):
+                parts.append(robustness.describe_joint(by_point))
+            if parts:
+                causes.append("inputs the document does not give")
+            if len({v for v, _ in by_set}) > 1:
+                parts.append(robustness.describe_seed_sets([v for v, _ in by_set], design))
+                causes.append("chance")
+            row["robust"] = "false" if parts or vague == "false" else "true"
+            if parts:
                 row["verdict"] = "not_reproducible"
                 row["note"] = (
-                    f"verdict hinges on inputs the document does not give (one at a time, "
-                    f"others nominal): {'; '.join(flips)}. At the nominal inputs: {was}"
+                    f"verdict hinges on {' and on '.join(causes)}: "
+                    f"{'. '.join(parts)}. At the nominal inputs: {nominal_verdict}"
                     + (f" ({row['note']})" if row["note"] else "")
                 )
         rows.append(row)

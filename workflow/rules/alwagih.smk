@@ -66,7 +66,7 @@ rule alwagih_claims:
         **script_params("reproduce.py", "abglib.replications.alwagih.claims"),
         doc="alwagih",
         part="claims",
-        cfg=doc_config("alwagih", "datasets"),
+        cfg=doc_config("alwagih", "datasets", "robustness"),
         overrides=config["tolerance_overrides"].get("alwagih", {}),
         digits=config["significant_digits"],
     run:

@@ -65,7 +65,7 @@ rule antenna_claims:
         **script_params("reproduce.py", "abglib.replications.antenna.claims"),
         doc="antenna",
         part="claims",
-        cfg=doc_config("antenna"),
+        cfg=doc_config("antenna", "robustness"),
         overrides=config["tolerance_overrides"].get("antenna", {}),
         digits=config["significant_digits"],
     run:

@@ -60,7 +60,7 @@ rule faa_bendix_claims:
         **script_params("reproduce.py", "abglib.replications.faa_bendix.claims"),
         doc="faa_bendix",
         part="claims",
-        cfg=doc_config("faa_bendix"),
+        cfg=doc_config("faa_bendix", "robustness"),
         overrides=config["tolerance_overrides"].get("faa_bendix", {}),
         digits=config["significant_digits"],
     run:

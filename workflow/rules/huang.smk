@@ -55,7 +55,7 @@ rule huang_claims:
         **script_params("reproduce.py", "abglib.replications.huang.claims"),
         doc="huang",
         part="claims",
-        cfg=doc_config("huang"),
+        cfg=doc_config("huang", "robustness"),
         overrides=config["tolerance_overrides"].get("huang", {}),
         digits=config["significant_digits"],
     run:

@@ -102,7 +102,7 @@ rule steelman1978_claims:
         **script_params("reproduce.py", "abglib.replications.steelman1978.claims"),
         doc="steelman1978",
         part="claims",
-        cfg=doc_config("steelman1978"),
+        cfg=doc_config("steelman1978", "robustness"),
         overrides=config["tolerance_overrides"].get("steelman1978", {}),
         digits=config["significant_digits"],
     run:

@@ -1,0 +1,554 @@
+r"""Robustness of a verdict to chance and to combinations of assumed inputs.
+
+A row whose value rests on inputs the document does not give (``depends_on``, each with
+a plausible range, ``<doc>.plausible`` in ``config.yaml``) or on a Monte Carlo result is
+judged at more points than its nominal one (issue 21 item 5, ``shared/CONTRACTS.md``
+section 3, column ``robust``). Three designs, one rule: ``robust=true`` only when the
+verdict is the same at every point of every design that applies to the row; otherwise
+``robust=false``, the verdict is ``not_reproducible`` and the note says where each
+verdict holds.
+
+``one_at_a_time``
+    each input over its plausible grid, the others nominal
+    (:func:`abglib.replications.evaluate`).
+``joint``
+    one design for the whole document (:func:`joint_design`), over the inputs its rows
+    depend on:
+
+    * *corners*: for every row with ``2 <= k <= corner_inputs`` inputs, every
+      combination of the ends of its ranges (:func:`ends`: low and high of a numeric
+      range, every value of a categorical one, so ``2**k`` corners when the categorical
+      ranges have two values). The corners of all such rows are packed into few points
+      by a first-fit covering (:func:`corner_design`); an input no packed corner needs
+      stays nominal;
+    * *space-filling*: when some row has ``k > corner_inputs`` inputs, ``joint_points``
+      points of a Latin hypercube (:class:`scipy.stats.qmc.LatinHypercube`, seeded with
+      ``design_seed``) over the union of those rows' inputs (:func:`latin_hypercube`).
+      The hypercube's coordinate ``u`` in [0, 1) of an input whose plausible grid has
+      ``m`` values picks ``values[floor(u m)]``: every point lies on the declared grids,
+      and each input's ``m`` values are visited in equal shares (a Latin hypercube is
+      stratified in every coordinate).
+
+    A design point moves several inputs at once; a row is judged at the point's
+    *projection* onto its own inputs (:func:`project`), since ``depends_on`` declares
+    that no other input changes its value (a row whose verdict changed with an
+    undeclared input would show the change as a flip at that point). A projection that
+    moves at most one input is a point of the one-at-a-time sweep and is not repeated.
+``seed_set``
+    the document's config with every random seed it reads moved together
+    (:func:`seed_sets`): keys named ``seed`` or ending in ``_seed`` (integers) in the
+    document's own section and in the ``datasets`` section, set ``k`` (``k = 1 ..
+    seed_sets``) adding ``k * seed_prime`` to each. ``seed_prime`` is a large prime
+    (default 1 000 003): far larger than the offsets a document adds to one configured
+    seed (``seed + i`` for the i-th run, cell or row, a few hundred at most), so no two
+    sets share a draw (checked: :data:`SEED_GAP`); numpy's ``SeedSequence`` makes
+    distinct seeds independent streams. A row *rests on a Monte Carlo result* when its
+    result (value, note, readings) under set 1 differs from the configured one
+    (:func:`rests_on_chance`): detected, never listed by hand. Such a row is judged
+    under every set; a row whose result is bit-identical under set 1 reads no seeded
+    draw, and is judged under no further set.
+
+The design's sizes are declared in ``config.yaml``, section ``robustness``
+(:data:`DEFAULTS`, checked by :func:`settings`), with a schema entry in
+``workflow/schemas/config.schema.yaml``.
+
+This module imports the core and numpy/scipy only (the layering of
+:mod:`abglib.verdicts`).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any, Protocol
+
+import numpy as np
+
+from .._checks import AbglibValueError
+from ._numbers import format_number
+
+__all__ = [
+    "DEFAULTS",
+    "DESIGNS",
+    "MIN_SEED_SETS",
+    "ROBUSTNESS_COLUMNS",
+    "SEED_GAP",
+    "Design",
+    "JointPoint",
+    "corner_design",
+    "describe_joint",
+    "describe_seed_sets",
+    "ends",
+    "joint_design",
+    "latin_hypercube",
+    "project",
+    "rests_on_chance",
+    "seed_paths",
+    "seed_sets",
+    "settings",
+    "with_seeds_shifted",
+    "with_values",
+]
+
+#: Columns of ``results/<doc>/robustness.csv``: one row per judged point. ``design`` is
+#: one of :data:`DESIGNS`. ``input``/``value``: the input and its value (one at a time);
+#: the moved inputs and their values, ``;``-separated and aligned (joint); ``seeds`` and
+#: the set ``k`` (seed set; ``k = 0`` the configured seeds). ``nominal`` is true at the
+#: configured point.
+ROBUSTNESS_COLUMNS = ["key", "design", "input", "value", "nominal", "reproduced", "verdict"]
+
+#: The designs of a robustness row, in the order they are judged.
+DESIGNS = ("one_at_a_time", "joint", "seed_set")
+
+#: The fewest seed sets besides the configured one (CONTRACTS.md section 3, from v0.4.0).
+MIN_SEED_SETS = 5
+
+#: Two seeds of different seed sets must differ by at least this much: a document draws
+#: with ``seed + i`` for i below its number of runs, cells or rows (500 at most in
+#: ``config.yaml``), so sets closer than this could share a stream.
+SEED_GAP = 10_000
+
+#: The design of ``config.yaml``'s ``robustness`` section when a key is absent (the
+#: schema's defaults).
+DEFAULTS = {
+    "seed_sets": 5,
+    "seed_prime": 1_000_003,
+    "corner_inputs": 4,
+    "joint_points": 8,
+    "design_seed": 20_261_201,
+}
+
+# allowed ranges of the keys (the schema's; the message names them)
+_LIMITS = {
+    "seed_sets": (MIN_SEED_SETS, 50),
+    "seed_prime": (100_003, 2**31 - 1),
+    "corner_inputs": (1, 8),
+    "joint_points": (4, 256),
+    "design_seed": (0, 2**32 - 1),
+}
+
+# the sections whose seeds a seed set moves (besides the document's own)
+_SEED_SECTIONS = ("datasets",)
+
+
+class Axis(Protocol):
+    """What the designs need of a plausible range
+    (:class:`abglib.replications.PlausibleRange` is one)."""
+
+    name: str
+    nominal: Any
+    values: tuple
+    numeric: bool
+
+
+@dataclass(frozen=True)
+class Design:
+    """The sizes of the robustness designs (``config.yaml`` section ``robustness``).
+
+    Attributes
+    ----------
+    seed_sets : int
+        Seed sets besides the configured one (at least :data:`MIN_SEED_SETS`).
+    seed_prime : int
+        Set ``k`` moves every seed by ``k * seed_prime`` (a prime).
+    corner_inputs : int
+        Rows with at most this many inputs are judged at every corner of their ranges;
+        rows with more, over the Latin hypercube.
+    joint_points : int
+        Points of the Latin hypercube.
+    design_seed : int
+        Seed of the Latin hypercube (the design is fixed by the config).
+    """
+
+    seed_sets: int = DEFAULTS["seed_sets"]
+    seed_prime: int = DEFAULTS["seed_prime"]
+    corner_inputs: int = DEFAULTS["corner_inputs"]
+    joint_points: int = DEFAULTS["joint_points"]
+    design_seed: int = DEFAULTS["design_seed"]
+
+
+def settings(config: Mapping) -> Design:
+    """The robustness design declared in ``config['robustness']`` (defaults:
+    :data:`DEFAULTS`).
+
+    Raises
+    ------
+    AbglibValueError
+        An unknown key, a value that is not an integer, outside its allowed range (e.g.
+        fewer than :data:`MIN_SEED_SETS` seed sets), or a ``seed_prime`` that is not
+        prime; the message names the key, the allowed range and the value.
+    """
+    spec = config.get("robustness", None) or {}
+    if not isinstance(spec, Mapping):
+        raise AbglibValueError(f"robustness must be a mapping, got {spec!r}")
+    unknown = sorted(set(spec) - set(DEFAULTS))
+    if unknown:
+        raise AbglibValueError(
+            f"robustness: unknown keys {unknown}; allowed keys are {sorted(DEFAULTS)}"
+        )
+    out = {}
+    for key, default in DEFAULTS.items():
+        value = spec.get(key, default)
+        lo, hi = _LIMITS[key]
+        name = f"robustness.{key}"
+        if not isinstance(value, (int, np.integer)) or isinstance(value, bool):
+            raise AbglibValueError(f"{name} must be an integer in [{lo}, {hi}], got {value!r}")
+        if not lo <= int(value) <= hi:
+            raise AbglibValueError(f"{name} must satisfy {lo} <= {name} <= {hi}, got {value!r}")
+        out[key] = int(value)
+    if not _is_prime(out["seed_prime"]):
+        raise AbglibValueError(
+            f"robustness.seed_prime must be a prime, got {out['seed_prime']} "
+            f"(= {_smallest_factor(out['seed_prime'])} x "
+            f"{out['seed_prime'] // _smallest_factor(out['seed_prime'])})"
+        )
+    return Design(**out)
+
+
+def _smallest_factor(n: int) -> int:
+    if n % 2 == 0:
+        return 2
+    for f in range(3, math.isqrt(n) + 1, 2):
+        if n % f == 0:
+            return f
+    return n
+
+
+def _is_prime(n: int) -> bool:
+    return n >= 2 and _smallest_factor(n) == n
+
+
+# --------------------------------------------------------------------------- config paths
+def _get(config: Mapping, path: str):
+    node = config
+    for part in path.split("."):
+        if isinstance(node, Mapping) and part in node:
+            node = node[part]
+        elif isinstance(node, list) and part.isdigit() and int(part) < len(node):
+            node = node[int(part)]
+        else:
+            raise AbglibValueError(f"config has no entry {path!r} (missing {part!r})")
+    return node
+
+
+def _plain(x):
+    if isinstance(x, Mapping):
+        return {k: _plain(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_plain(v) for v in x]
+    return copy.copy(x)
+
+
+def with_values(config: Mapping, values: Mapping[str, Any]) -> dict:
+    """A deep copy of ``config`` with every dotted path of ``values`` set (each path must
+    exist: a typo must not create a key)."""
+    for path in values:
+        _get(config, path)
+    out = _plain(config)
+    for path, value in values.items():
+        parts = path.split(".")
+        node = out
+        for part in parts[:-1]:
+            node = node[int(part)] if isinstance(node, list) else node[part]
+        if isinstance(node, list):
+            node[int(parts[-1])] = copy.deepcopy(value)
+        else:
+            node[parts[-1]] = copy.deepcopy(value)
+    return out
+
+
+# --------------------------------------------------------------------------- seed sets
+def _is_seed_key(key) -> bool:
+    return isinstance(key, str) and (key == "seed" or key.endswith("_seed"))
+
+
+def seed_paths(config: Mapping, doc: str) -> dict[str, int]:
+    """Every random seed the document's study reads: ``{dotted path: seed}`` for the keys
+    named ``seed`` or ending in ``_seed`` in ``config[doc]`` and ``config['datasets']``.
+
+    Raises
+    ------
+    AbglibValueError
+        A seed key whose value is not a non-negative integer.
+    """
+    found: dict[str, int] = {}
+
+    def walk(node, prefix):
+        if isinstance(node, Mapping):
+            for k, v in node.items():
+                path = f"{prefix}.{k}"
+                if _is_seed_key(k) and not isinstance(v, (Mapping, list)):
+                    if v is None:
+                        continue
+                    if not isinstance(v, (int, np.integer)) or isinstance(v, bool) or v < 0:
+                        raise AbglibValueError(
+                            f"{path} must be a non-negative integer seed, got {v!r}"
+                        )
+                    found[path] = int(v)
+                else:
+                    walk(v, path)
+        elif isinstance(node, list):
+            for i, v in enumerate(node):
+                walk(v, f"{prefix}.{i}")
+
+    for section in (doc, *_SEED_SECTIONS):
+        if section in config:
+            walk(config[section], section)
+    return found
+
+
+def with_seeds_shifted(config: Mapping, doc: str, shift: int) -> dict:
+    """``config`` with every seed of :func:`seed_paths` moved by ``shift``."""
+    return with_values(config, {p: s + int(shift) for p, s in seed_paths(config, doc).items()})
+
+
+def seed_sets(config: Mapping, doc: str, design: Design | None = None) -> list[dict]:
+    """The configs of seed sets ``k = 1 .. design.seed_sets``: every seed moved by
+    ``k * design.seed_prime``. Empty when the document reads no seed.
+
+    Raises
+    ------
+    AbglibValueError
+        When two seeds of different sets (the configured one included) are closer than
+        :data:`SEED_GAP`, naming them.
+    """
+    design = design or settings(config)
+    seeds = seed_paths(config, doc)
+    if not seeds:
+        return []
+    p, n = design.seed_prime, design.seed_sets
+    drawn = sorted((s + k * p, k, path) for k in range(n + 1) for path, s in seeds.items())
+    for (a, ka, pa), (b, kb, pb) in zip(drawn, drawn[1:], strict=False):
+        if ka != kb and b - a < SEED_GAP:
+            raise AbglibValueError(
+                f"{doc}: seed sets {ka} and {kb} come within {b - a} of each other "
+                f"({pa} = {a}, {pb} = {b}); two sets must stay {SEED_GAP} apart: choose "
+                f"another robustness.seed_prime (now {p})"
+            )
+    return [with_seeds_shifted(config, doc, k * p) for k in range(1, n + 1)]
+
+
+def rests_on_chance(nominal, other) -> bool:
+    """Whether a claim's result changed under another seed set: its value, note or
+    readings differ (NaN equals NaN). ``nominal`` and ``other`` carry ``value``,
+    ``note`` and ``readings`` (:class:`abglib.replications.Result`)."""
+    if not _same_value(nominal.value, other.value) or nominal.note != other.note:
+        return True
+    a, b = tuple(nominal.readings), tuple(other.readings)
+    if len(a) != len(b):
+        return True
+    return any(
+        ra.description != rb.description or not _same_value(ra.value, rb.value)
+        for ra, rb in zip(a, b, strict=True)
+    )
+
+
+def _same_value(a, b) -> bool:
+    if _is_number(a) and _is_number(b):
+        fa, fb = float(a), float(b)
+        return fa == fb or (math.isnan(fa) and math.isnan(fb))
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return bool(np.array_equal(np.asarray(a), np.asarray(b), equal_nan=True))
+    return type(a) is type(b) and a == b
+
+
+def _is_number(v) -> bool:
+    return isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(
+        v, (bool, np.bool_)
+    )
+
+
+# --------------------------------------------------------------------------- joint design
+@dataclass(frozen=True)
+class JointPoint:
+    """One point of a document's joint design.
+
+    ``kind`` is ``corner`` or ``hypercube``, ``index`` its number within its kind
+    (from 1), ``values`` the inputs it moves off their nominal values
+    (``{dotted path: value}``; every other input nominal).
+    """
+
+    kind: str
+    index: int
+    values: Mapping[str, Any]
+
+    @property
+    def label(self) -> str:
+        return f"{self.kind} {self.index}"
+
+
+def ends(axis: Axis) -> tuple:
+    """The ends of a plausible range: its lowest and highest value when numeric, every
+    value when categorical (in the declared order)."""
+    if axis.numeric:
+        return (min(axis.values), max(axis.values))
+    return tuple(axis.values)
+
+
+def _same(a, b) -> bool:
+    if _is_number(a) and _is_number(b):
+        return math.isclose(float(a), float(b), rel_tol=1e-12, abs_tol=0.0) or a == b
+    return a == b
+
+
+def _key(v):
+    return repr(v) if isinstance(v, (list, dict, tuple)) else v
+
+
+def corner_design(
+    axes: Mapping[str, Axis], input_sets: Iterable[Sequence[str]], max_inputs: int
+) -> list[dict[str, Any]]:
+    """Points that together hold every corner of every input set of ``2 .. max_inputs``
+    inputs.
+
+    A corner of an input set assigns one of its :func:`ends` to each input. The corners
+    are packed first-fit: sets taken largest first, then in order of appearance, their
+    corners in lexicographic order of the ends; each point starts from the first corner
+    not yet held and takes every later one that agrees with it on the inputs they share.
+    An input a point's corners do not assign stays nominal (it is left out of the point).
+
+    Returns
+    -------
+    list of dict : ``{dotted path: value}`` per point, the inputs at their nominal
+    value left out.
+    """
+    sets = []
+    for s in input_sets:
+        s = tuple(dict.fromkeys(s))
+        if 2 <= len(s) <= max_inputs and s not in sets:
+            sets.append(s)
+    sets.sort(key=len, reverse=True)  # stable: ties keep their order of appearance
+    corners = []
+    for s in sets:
+        for combo in np.ndindex(*(len(ends(axes[n])) for n in s)):
+            corners.append(tuple((n, ends(axes[n])[i]) for n, i in zip(s, combo, strict=True)))
+    points: list[dict[str, Any]] = []
+    left = list(corners)
+    while left:
+        point = dict(left[0])
+        for corner in left[1:]:
+            if all(n not in point or _same(point[n], v) for n, v in corner):
+                point.update(corner)
+        points.append(point)
+        left = [c for c in left if not all(n in point and _same(point[n], v) for n, v in c)]
+    return [{n: v for n, v in p.items() if not _same(v, axes[n].nominal)} for p in points]
+
+
+def latin_hypercube(
+    axes: Mapping[str, Axis], names: Sequence[str], n: int, seed: int
+) -> list[dict[str, Any]]:
+    """``n`` points of a Latin hypercube over ``names``, each coordinate on its grid.
+
+    :class:`scipy.stats.qmc.LatinHypercube` (``d = len(names)``, ``scramble=True``,
+    ``rng = numpy.random.default_rng(seed)``); coordinate ``u`` of an input with grid
+    ``values`` (``m`` of them) picks ``values[min(floor(u m), m - 1)]``.
+
+    Returns
+    -------
+    list of dict : ``{dotted path: value}`` per point, inputs at their nominal value
+    left out.
+    """
+    from scipy.stats import qmc
+
+    names = list(dict.fromkeys(names))
+    if not names:
+        return []
+    u = qmc.LatinHypercube(d=len(names), rng=np.random.default_rng(int(seed))).random(int(n))
+    out = []
+    for row in u:
+        point = {}
+        for name, ui in zip(names, row, strict=True):
+            vals = axes[name].values
+            v = vals[min(int(math.floor(ui * len(vals))), len(vals) - 1)]
+            if not _same(v, axes[name].nominal):
+                point[name] = v
+        out.append(point)
+    return out
+
+
+def joint_design(
+    axes: Mapping[str, Axis], input_sets: Iterable[Sequence[str]], design: Design
+) -> list[JointPoint]:
+    """The joint design of one document: the packed corners (:func:`corner_design`) of
+    the rows with ``2 .. design.corner_inputs`` inputs, then, when some row has more,
+    ``design.joint_points`` points of a Latin hypercube (:func:`latin_hypercube`) over
+    the union of those rows' inputs. Points that move at most one input (one-at-a-time
+    points) and repeated points are dropped.
+    """
+    input_sets = [tuple(dict.fromkeys(s)) for s in input_sets]
+    big = [n for s in input_sets if len(s) > design.corner_inputs for n in s]
+    big = list(dict.fromkeys(big))
+    out: list[JointPoint] = []
+    seen = set()
+    raw = [("corner", p) for p in corner_design(axes, input_sets, design.corner_inputs)]
+    raw += [
+        ("hypercube", p)
+        for p in latin_hypercube(axes, big, design.joint_points, design.design_seed)
+    ]
+    count = {"corner": 0, "hypercube": 0}
+    for kind, p in raw:
+        count[kind] += 1
+        key = tuple(sorted((n, _key(v)) for n, v in p.items()))
+        if len(p) < 2 or key in seen:
+            continue
+        seen.add(key)
+        out.append(JointPoint(kind, count[kind], dict(p)))
+    return out
+
+
+def project(point: JointPoint, inputs: Sequence[str]) -> tuple[tuple[str, Any], ...]:
+    """The inputs of a row that ``point`` moves, with their values, in the row's order."""
+    return tuple((n, point.values[n]) for n in inputs if n in point.values)
+
+
+# --------------------------------------------------------------------------- notes
+def _fmt(v) -> str:
+    return format_number(v, 4) if _is_number(v) else str(v)
+
+
+def _short(name: str) -> str:
+    # 'alwagih.reconstruction.noise_scale' -> 'reconstruction.noise_scale'
+    return name.split(".", 1)[1] if "." in name else name
+
+
+def describe_point(projection: Sequence[tuple[str, Any]]) -> str:
+    """``'reconstruction.noise_scale=2, m1_alpha=0.2'`` (the document prefix dropped)."""
+    return ", ".join(f"{_short(n)}={_fmt(v)}" for n, v in projection)
+
+
+def describe_joint(judged: Sequence[tuple[Sequence[tuple[str, Any]], str]], limit: int = 6) -> str:
+    """Where each verdict holds over the joint points of one row: ``judged`` lists
+    ``(projection, verdict)``. The verdicts held at fewer points are listed point by
+    point (at most ``limit`` each, then a count); the most common one by its count."""
+    by: dict[str, list] = {}
+    for proj, v in judged:
+        by.setdefault(v, []).append(proj)
+    order = sorted(by, key=lambda v: (-len(by[v]), v))
+    parts = []
+    for i, v in enumerate(order):
+        pts = by[v]
+        if i == 0 and len(order) > 1:
+            parts.append(f"{v} at {len(pts)} of them")
+            continue
+        listed = "; ".join(describe_point(p) for p in pts[:limit])
+        more = f"; and {len(pts) - limit} more (robustness.csv)" if len(pts) > limit else ""
+        parts.append(f"{v} at {len(pts)}: {listed}{more}")
+    return f"jointly ({len(judged)} points moving 2 or more inputs at once): " + ", ".join(parts)
+
+
+def describe_seed_sets(verdicts: Sequence[str], design: Design) -> str:
+    """Where each verdict holds over the seed sets of one row: ``verdicts[k]`` is the
+    verdict under set ``k`` (``k = 0`` the configured seeds)."""
+    by: dict[str, list[int]] = {}
+    for k, v in enumerate(verdicts):
+        by.setdefault(v, []).append(k)
+    parts = [
+        f"{v} under set{'s' if len(ks) > 1 else ''} {', '.join(map(str, ks))}"
+        for v, ks in sorted(by.items(), key=lambda kv: kv[1][0])
+    ]
+    return (
+        f"under {len(verdicts) - 1} seed sets besides the configured one (set 0; set k "
+        f"moves every seed by k x {design.seed_prime}): " + ", ".join(parts)
+    )

@@ -1,0 +1,391 @@
+"""Robustness to chance and to combinations (abglib.verdicts.robustness, issue 21 item 5):
+the joint design, the seed sets, their sizes and checks, and evaluate's use of them."""
+
+from __future__ import annotations
+
+import itertools
+from functools import cached_property
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from abglib import AbglibValueError
+from abglib.replications import ClaimSet, PlausibleRange, Result, Study, evaluate
+from abglib.reporting.compare import scorecard
+from abglib.verdicts import robustness as R
+
+REPO = Path(__file__).resolve().parents[1]
+
+PUB = pd.DataFrame(
+    [
+        # key, item, quantity, published, where
+        ("sum", "eq. 1", "a + b - 1", "1.0", "p. 1"),
+        ("product", "eq. 2", "1 + (a - 1)(b - 1)", "1.0", "p. 2"),
+        ("draw", "eq. 3", "a Monte Carlo mean", "2.0", "p. 3"),
+        ("draw.claim", "p. 4", "claim: the Monte Carlo mean is below 10", "", "p. 4"),
+        ("fixed", "eq. 5", "a closed form", "3.0", "p. 5"),
+    ],
+    columns=["key", "item", "quantity", "published", "where"],
+)
+
+
+class Toy(Study):
+    doc = "toy"
+    built = 0
+
+    def __init__(self, config, published):
+        super().__init__(config, published)
+        Toy.built += 1
+
+    @cached_property
+    def mc_mean(self) -> float:
+        # stands in for a Monte Carlo mean: it moves by 0.1 per seed set (seed + k p)
+        return 2.0 + 0.1 * (self.cfg["mc"]["seed"] - 1000) / R.DEFAULTS["seed_prime"]
+
+
+CLAIMS = ClaimSet("toy")
+
+
+@CLAIMS.claim("sum", depends_on=("toy.a", "toy.b"))
+def _sum(s):
+    # 0.4 (a - 1) + 0.4 (b - 1): within the printed 1.0 +- 0.05 one input at a time
+    # (+-0.04 at a, b = 0.9, 1.1) but 0.08 off at the corners (0.9, 0.9) and (1.1, 1.1)
+    a, b = s.cfg["a"], s.cfg["b"]
+    return Result(1.0 + 0.4 * (a - 1.0) + 0.4 * (b - 1.0), "linear in a and b")
+
+
+@CLAIMS.claim("product", depends_on=("toy.a", "toy.b"))
+def _product(s):
+    # 1 + (a - 1)(b - 1): at most 0.01 off anywhere in the box, robust jointly
+    a, b = s.cfg["a"], s.cfg["b"]
+    return Result(1.0 + (a - 1.0) * (b - 1.0), "product")
+
+
+@CLAIMS.claim("draw")
+def _draw(s):
+    return Result(s.mc_mean, f"mean {s.mc_mean:.3f}")
+
+
+@CLAIMS.claim("draw.claim")
+def _draw_claim(s):
+    return Result(bool(s.mc_mean < 10.0), f"mean {s.mc_mean:.3f} < 10")
+
+
+@CLAIMS.claim("fixed")
+def _fixed(s):
+    return Result(3.0, "no random draw")
+
+
+def config(**robustness):
+    return {
+        "toy": {
+            "a": 1.0,
+            "b": 1.0,
+            "mc": {"seed": 1000, "runs": 10},
+            "plausible": {
+                "toy.a": {"values": [0.9, 1.1], "basis": "test"},
+                "toy.b": {"values": [0.9, 1.1], "basis": "test"},
+            },
+        },
+        "robustness": dict(robustness),
+    }
+
+
+def run(cfg=None):
+    cfg = cfg or config()
+    return evaluate("toy", CLAIMS, PUB, Toy(cfg, PUB), lambda c: Toy(c, PUB))
+
+
+@pytest.fixture(scope="module")
+def judged():
+    return run()
+
+
+def row_of(comp, key):
+    """The comparison row of a published key (comparison.csv has no key column)."""
+    return comp.set_index("item").loc[PUB.set_index("key").loc[key, "item"]]
+
+
+# --------------------------------------------------------------------------- evaluate
+def test_a_flip_at_a_joint_corner_only_is_fragile(judged):
+    comp, points = judged
+    row = row_of(comp, "sum")
+    oat = points[(points["key"] == "sum") & (points["design"] == "one_at_a_time")]
+    assert set(oat["verdict"]) == {"match"}  # every one-at-a-time point holds
+    joint = points[(points["key"] == "sum") & (points["design"] == "joint")]
+    # the four corners of (a, b): 1 -+ 0.08 at the diagonal ones, 1 at the others
+    assert sorted(joint["value"]) == ["0.9;0.9", "0.9;1.1", "1.1;0.9", "1.1;1.1"]
+    flips = dict(zip(joint["value"], joint["verdict"], strict=True))
+    assert flips == {
+        "0.9;0.9": "mismatch",
+        "1.1;1.1": "mismatch",
+        "0.9;1.1": "match",
+        "1.1;0.9": "match",
+    }
+    assert set(joint["input"]) == {"toy.a;toy.b"}
+    assert row["verdict"] == "not_reproducible" and row["robust"] == "false"
+    assert "jointly" in row["note"] and "mismatch at 2: a=0.9, b=0.9; a=1.1, b=1.1" in row["note"]
+    assert "At the nominal inputs: match" in row["note"]
+
+
+def test_a_row_robust_one_at_a_time_and_jointly(judged):
+    comp, points = judged
+    row = row_of(comp, "product")
+    assert row["verdict"] == "match" and row["robust"] == "true"
+    sub = points[points["key"] == "product"]
+    assert set(sub["design"]) == {"one_at_a_time", "joint"}
+    assert len(sub[sub["design"] == "joint"]) == 4 and set(sub["verdict"]) == {"match"}
+
+
+def test_a_flip_under_a_seed_set_is_fragile(judged):
+    comp, points = judged
+    row = row_of(comp, "draw")
+    sets = points[(points["key"] == "draw") & (points["design"] == "seed_set")]
+    # the configured set and 5 more; set k gives 2 + 0.1 k: only set 0 is within 0.05
+    assert list(sets["value"]) == ["0", "1", "2", "3", "4", "5"]
+    assert list(sets["nominal"]) == [True] + [False] * 5
+    assert list(sets["verdict"]) == ["match"] + ["mismatch"] * 5
+    assert row["verdict"] == "not_reproducible" and row["robust"] == "false"
+    assert row["depends_on"] == "seeds"
+    assert "on chance" in row["note"] and "match under set 0" in row["note"]
+    assert "mismatch under sets 1, 2, 3, 4, 5" in row["note"]
+
+
+def test_a_monte_carlo_row_whose_verdict_holds_is_robust(judged):
+    comp, points = judged
+    row = row_of(comp, "draw.claim")
+    assert row["verdict"] == "match" and row["robust"] == "true" and row["depends_on"] == "seeds"
+    assert len(points[points["key"] == "draw.claim"]) == 6
+
+
+def test_a_row_without_random_draws_gets_no_seed_sets(judged):
+    comp, points = judged
+    row = row_of(comp, "fixed")
+    assert row["verdict"] == "match" and row["robust"] == "" and row["depends_on"] == ""
+    assert points[points["key"] == "fixed"].empty
+
+
+def test_robustness_csv_has_its_columns_and_designs(judged):
+    _, points = judged
+    assert list(points.columns) == R.ROBUSTNESS_COLUMNS
+    assert set(points["design"]) == set(R.DESIGNS)
+
+
+def test_scorecard_counts_the_new_fragile_rows(judged):
+    comp, _ = judged
+    card = scorecard([comp]).iloc[0]
+    assert (card["robust"], card["fragile"]) == (2, 2)
+
+
+def test_every_point_builds_one_study_shared_by_every_row():
+    Toy.built = 0
+    run()
+    # nominal + 4 one-at-a-time points (also the corners' projections onto one input
+    # are not rebuilt) + 4 joint corners + 5 seed sets: both joint rows share the corners
+    assert Toy.built == 1 + 4 + 4 + 5
+
+
+def test_more_seed_sets_judge_more():
+    _, points = run(config(seed_sets=7))
+    assert len(points[(points["key"] == "draw") & (points["design"] == "seed_set")]) == 8
+
+
+def test_a_config_with_too_few_seed_sets_is_refused():
+    with pytest.raises(AbglibValueError, match=r"5 <= robustness.seed_sets <= 50, got 3"):
+        run(config(seed_sets=3))
+
+
+# --------------------------------------------------------------------------- settings
+@pytest.mark.parametrize(
+    "spec, match",
+    [
+        (
+            {"seed_sets": 4},
+            r"robustness.seed_sets must satisfy 5 <= robustness.seed_sets <= 50, got 4",
+        ),
+        ({"seed_sets": 5.0}, r"robustness.seed_sets must be an integer in \[5, 50\], got 5.0"),
+        ({"seed_sets": True}, r"robustness.seed_sets must be an integer"),
+        ({"joint_points": 2}, r"4 <= robustness.joint_points <= 256, got 2"),
+        ({"corner_inputs": 0}, r"1 <= robustness.corner_inputs <= 8, got 0"),
+        ({"seed_prime": 1000001}, r"seed_prime must be a prime, got 1000001 \(= 101 x 9901\)"),
+        ({"seed_prime": 99991}, r"100003 <= robustness.seed_prime"),
+        ({"seeds": 5}, r"unknown keys \['seeds'\]"),
+    ],
+)
+def test_bad_settings_name_the_value_and_the_allowed_range(spec, match):
+    with pytest.raises(AbglibValueError, match=match):
+        R.settings({"robustness": spec})
+
+
+def test_settings_default_to_the_schema_defaults():
+    schema = yaml.safe_load((REPO / "workflow/schemas/config.schema.yaml").read_text())
+    props = schema["properties"]["robustness"]["properties"]
+    assert {k: v["default"] for k, v in props.items()} == R.DEFAULTS
+    assert props["seed_sets"]["minimum"] == R.MIN_SEED_SETS == 5
+    assert R.settings({}) == R.Design(**R.DEFAULTS)
+    for name in ("config.yaml", "tests/data/config_small.yaml"):
+        cfg = yaml.safe_load((REPO / name).read_text())
+        assert R.settings(cfg).seed_sets >= R.MIN_SEED_SETS, name
+
+
+# --------------------------------------------------------------------------- seed sets
+SEEDED = {
+    "doc": {
+        "seed": 11,
+        "checks_seed": 12,
+        "monte_carlo": {"runs": 3, "seed": 13},
+        "cells": [{"seed": 14}, {"other": 1}],
+        "seeds_used": 99,  # not a seed key: it neither is 'seed' nor ends in '_seed'
+        "no_seed": None,
+    },
+    "datasets": {"scenarios": {"w1": {"seed": 6101, "runs": 5}}},
+    "benchmark": {"seed": 7000},  # another document's section: not read, not moved
+    "robustness": {"design_seed": 5},
+}
+
+
+def test_seed_paths_are_the_seed_keys_of_the_document_and_datasets():
+    assert R.seed_paths(SEEDED, "doc") == {
+        "doc.seed": 11,
+        "doc.checks_seed": 12,
+        "doc.monte_carlo.seed": 13,
+        "doc.cells.0.seed": 14,
+        "datasets.scenarios.w1.seed": 6101,
+    }
+
+
+def test_seed_set_k_moves_every_seed_by_k_primes():
+    sets = R.seed_sets(SEEDED, "doc", R.Design())
+    p = R.DEFAULTS["seed_prime"]
+    assert len(sets) == 5
+    for k, cfg in enumerate(sets, start=1):
+        assert R.seed_paths(cfg, "doc") == {
+            path: s + k * p for path, s in R.seed_paths(SEEDED, "doc").items()
+        }
+        # everything else unchanged, the input untouched
+        assert cfg["doc"]["seeds_used"] == 99 and cfg["doc"]["monte_carlo"]["runs"] == 3
+        assert cfg["benchmark"] == {"seed": 7000} and cfg["robustness"] == {"design_seed": 5}
+    assert SEEDED["doc"]["seed"] == 11
+    # distinct seeds are independent numpy streams: no two sets draw the same numbers
+    draws = {np.random.default_rng(c["datasets"]["scenarios"]["w1"]["seed"]).random() for c in sets}
+    assert len(draws) == 5
+
+
+def test_a_document_without_seeds_has_no_seed_sets():
+    assert R.seed_sets({"doc": {"a": 1}, "robustness": {}}, "doc") == []
+
+
+def test_seed_sets_that_could_share_a_draw_are_refused():
+    cfg = {"doc": {"seed": 0, "b_seed": 100_003 - 5}}
+    with pytest.raises(AbglibValueError, match=r"seed sets 0 and 1 come within 5"):
+        R.seed_sets(cfg, "doc", R.Design(seed_prime=100_003))
+
+
+def test_a_seed_that_is_not_an_integer_is_refused():
+    with pytest.raises(AbglibValueError, match=r"doc.seed must be a non-negative integer"):
+        R.seed_paths({"doc": {"seed": 1.5}}, "doc")
+
+
+# --------------------------------------------------------------------------- designs
+def axis(name, values, nominal, numeric=True):
+    values = tuple(sorted(set(values) | {nominal})) if numeric else tuple(values)
+    return PlausibleRange(
+        name,
+        nominal,
+        values,
+        "test",
+        min(values) if numeric else None,
+        max(values) if numeric else None,
+        numeric,
+    )
+
+
+AXES = {
+    "d.a": axis("d.a", [0.5, 2.0], 1.0),
+    "d.b": axis("d.b", [1, 2, 3, 4, 5], 3),
+    "d.c": axis("d.c", ["x", "y", "z"], "x", numeric=False),
+    "d.e": axis("d.e", [0.1, 0.9], 0.5),
+    "d.f": axis("d.f", [10.0, 30.0], 20.0),
+}
+
+
+def test_ends_are_the_extremes_or_every_category():
+    assert R.ends(AXES["d.b"]) == (1, 5)
+    assert R.ends(AXES["d.c"]) == ("x", "y", "z")
+
+
+@pytest.mark.parametrize("k", [2, 3, 4])
+def test_one_input_set_gets_all_its_corners(k):
+    names = ["d.a", "d.b", "d.e", "d.f"][:k]
+    pts = R.corner_design(AXES, [names], 4)
+    assert len(pts) == 2**k
+    got = {tuple(p[n] for n in names) for p in pts}
+    want = set(itertools.product(*(R.ends(AXES[n]) for n in names)))
+    assert got == want
+
+
+def test_corners_of_several_sets_are_packed_and_all_held():
+    sets = [("d.a", "d.b"), ("d.a", "d.c"), ("d.e", "d.f")]
+    pts = R.corner_design(AXES, sets, 4)
+    for s in sets:
+        want = set(np.ndindex(*(len(R.ends(AXES[n])) for n in s)))
+        held = {
+            tuple(R.ends(AXES[n]).index(p.get(n, AXES[n].nominal)) for n in s)
+            for p in pts
+            if all(p.get(n, AXES[n].nominal) in R.ends(AXES[n]) for n in s)
+        }
+        assert want <= held, s
+    # 4 + 6 + 4 = 14 corners in at most max(4, 6, 4) = 6 points after packing
+    assert len(pts) == 6
+    # the nominal 'x' of the categorical input is left out of a point
+    assert all(p.get("d.c") != "x" for p in pts)
+
+
+def test_rows_with_one_input_or_too_many_get_no_corners():
+    assert R.corner_design(AXES, [("d.a",)], 4) == []
+    assert R.corner_design(AXES, [("d.a", "d.b", "d.e")], 2) == []
+
+
+@pytest.mark.parametrize("n", [4, 8, 10])
+def test_hypercube_has_its_declared_size_on_the_grids(n):
+    names = ["d.a", "d.b", "d.e"]
+    pts = R.latin_hypercube(AXES, names, n, seed=1)
+    assert len(pts) == n
+    full = [{m: p.get(m, AXES[m].nominal) for m in names} for p in pts]
+    for m in names:
+        assert {q[m] for q in full} <= set(AXES[m].values)
+    if n == 10:
+        # 5 grid values of d.b, 10 strata: each value exactly twice
+        counts = pd.Series([q["d.b"] for q in full]).value_counts()
+        assert set(counts) == {2} and len(counts) == 5
+    assert R.latin_hypercube(AXES, names, n, seed=1) == pts  # seeded: the same design
+
+
+def test_joint_design_sizes():
+    design = R.Design(corner_inputs=2, joint_points=8)
+    small, big = ("d.a", "d.b"), ("d.a", "d.b", "d.e", "d.f")
+    pts = R.joint_design(AXES, [small, big, ("d.c",)], design)
+    corners = [p for p in pts if p.kind == "corner"]
+    cube = [p for p in pts if p.kind == "hypercube"]
+    assert len(corners) == 4
+    assert 1 <= len(cube) <= 8 and all(set(p.values) <= set(big) for p in cube)
+    assert all(len(p.values) >= 2 for p in pts)  # one-at-a-time points are not repeated
+    keys = [tuple(sorted(p.values.items())) for p in pts]
+    assert len(keys) == len(set(keys))
+    # no row above corner_inputs: no hypercube
+    assert all(p.kind == "corner" for p in R.joint_design(AXES, [small], design))
+    # a projection keeps the row's inputs in its order
+    p = R.JointPoint("corner", 1, {"d.b": 5, "d.a": 2.0, "d.f": 30.0})
+    assert R.project(p, ("d.a", "d.b")) == (("d.a", 2.0), ("d.b", 5))
+
+
+def test_rests_on_chance_compares_value_note_and_readings():
+    a = Result(1.0, "n")
+    assert not R.rests_on_chance(a, Result(1.0, "n"))
+    assert R.rests_on_chance(a, Result(1.0 + 1e-15, "n"))
+    assert R.rests_on_chance(a, Result(1.0, "n'"))
+    assert not R.rests_on_chance(Result(float("nan"), ""), Result(float("nan"), ""))
+    assert R.rests_on_chance(Result(True, ""), Result(1, ""))
