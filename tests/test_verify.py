@@ -93,6 +93,9 @@ def test_verify_without_a_build_says_what_to_run(tmp_path, capsys):
 
 def test_release_copies_and_refuses_to_overwrite(tmp_path, capsys):
     build = _folder(tmp_path / "build")
+    # the build states the release's version (abglib release checks it: test_provenance.py)
+    rows = "<tr><td>abglib version</td><td>9.9.9</td></tr><tr><td>abglib</td><td>9.9.9</td></tr>"
+    (build / "index.html").write_text(f'<h2 id="provenance">Provenance</h2><table>{rows}</table>')
     to = tmp_path / "reports" / "v9.9.9"
     assert main(["release", str(build), "--to", str(to)]) == 0
     assert (to / "doc" / "comparison.csv").read_text() == COMP

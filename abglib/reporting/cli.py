@@ -9,7 +9,9 @@
 ``abglib release``
     Cut a release: copy a build to ``reports/v<version>``. The one deliberate step that
     writes the committed release (a build never does); it refuses to replace an existing
-    release folder without ``--force``.
+    release folder without ``--force``, and refuses a build whose pages do not state the
+    provenance of one build of that version (``abglib.reporting.provenance.release_problems``:
+    each page's abglib version is the release's, one commit, one set of dependency versions).
 ``abglib changes OLD NEW``
     What changed between two version folders (e.g. ``reports/v0.2.0`` and
     ``reports/v0.3.0``, or a build's ``results/reports/v<version>``), per document: rows
@@ -113,8 +115,27 @@ def verify(build: Path, release: Path, limit: int = 5, partial: bool = False) ->
 
 
 def release(build: Path, to: Path, force: bool = False) -> int:
+    from .._checks import AbglibValueError
+    from .provenance import release_problems
+    from .versions import folder_version
+
     if not (build / "index.html").is_file():
         print(f"abglib release: no build at {build}; run `snakemake -c2` first", file=sys.stderr)
+        return 2
+    try:
+        version = folder_version(to)
+    except AbglibValueError as exc:
+        print(f"abglib release: {exc}", file=sys.stderr)
+        return 2
+    problems = release_problems(build, version)
+    if problems:
+        print(
+            f"abglib release: the build {build} does not state the provenance of one build of "
+            f"version {version}:\n  " + "\n  ".join(problems) + "\n"
+            f"(this abglib is {__version__}; render every page in one build of it: remove "
+            f"{build} and run `snakemake -c2`)",
+            file=sys.stderr,
+        )
         return 2
     if to.exists():
         if not force:

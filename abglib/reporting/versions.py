@@ -11,13 +11,29 @@ from pathlib import Path
 
 from .._checks import AbglibValueError
 
-__all__ = ["comparison_tables", "previous_version", "version_key"]
+__all__ = ["comparison_tables", "folder_version", "previous_version", "version_key"]
 
 
 def version_key(name: str) -> tuple[int, ...] | None:
     """``(0, 3, 0)`` for a folder name ``'v0.3.0'``; None for any other name."""
     m = re.fullmatch(r"v(\d+(?:\.\d+)*)", name)
     return tuple(int(x) for x in m.group(1).split(".")) if m else None
+
+
+def folder_version(folder) -> str:
+    """The version a version folder is named for: ``'0.4.0'`` for ``reports/v0.4.0``.
+
+    Raises
+    ------
+    AbglibValueError
+        When the folder's name is not ``v<x.y.z>`` (``CONTRACTS.md`` §4: ``reports/v<version>/``).
+    """
+    name = Path(folder).name
+    if version_key(name) is None:
+        raise AbglibValueError(
+            f"a version folder must be named v<version> (e.g. v0.4.0), got {name!r}"
+        )
+    return name[1:]
 
 
 def previous_version(releases, version: str) -> Path | None:
