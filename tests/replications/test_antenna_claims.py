@@ -832,3 +832,71 @@ def test_simulate_phases_reuses_the_object_states_read_only(s):
     order = a["xt_err"].shape[1] - 1
     xt = snap(phase_states(10.0, 0.1, t, order, phase_grid(3)))
     np.testing.assert_array_equal(a["z"], xt[:, 0])
+
+
+# ----------------------------------------------------------------------------- added in v0.4.0
+def _object_dare(s, order, v_w):
+    """The object block of eq 7.15 alone, by scipy's DARE (the filter's dual problem): the
+    Taylor model (eqs 3.4-3.5) observed through the tracking error with variance V_v[e]."""
+    at, ct, gt = taylor_model(order, s.dt)
+    q = scipy.linalg.solve_discrete_are(at.T, ct.T, v_w * gt @ gt.T, np.atleast_2d(s.vv[1, 1]))
+    k = at @ q @ ct.T / (ct @ q @ ct.T + s.vv[1, 1])
+    return q, at - k @ ct
+
+
+@claim_test(DOC, "ch7.af_inside_unit_circle")
+def test_af_keeps_the_antennas_unit_eigenvalue(s):
+    from abglib.replications.antenna.model import continuous_model
+
+    # the reconstructed antenna has a free rotation (no rotor-stator stiffness): a zero
+    # eigenvalue of the continuous model, z = exp(0 dt) = 1 of the discrete one
+    ac, _, _ = continuous_model(s.params)
+    assert np.min(np.abs(np.linalg.eigvals(ac))) < 1e-9
+    ad = scipy.linalg.expm(ac * s.dt)
+    assert np.max(np.abs(np.linalg.eigvals(ad))) == pytest.approx(1.0, abs=1e-9)
+    t = s.kalman_af
+    for order, v_w in zip(t["order"], t["v_w"], strict=True):
+        _, af_obj = _object_dare(s, order, s.vw_filter(v_w))
+        r_obj = np.max(np.abs(np.linalg.eigvals(af_obj)))
+        assert r_obj < 0.99  # the filter does stabilise the object model (its poles are at 1)
+        row = t[(t["order"] == order) & (t["v_w"] == v_w)].iloc[0]
+        # the object eigenvalues of A_f by the DARE route; the antenna's are the plant's
+        assert row["radius_object"] == pytest.approx(r_obj, rel=1e-6)
+        assert row["radius_af"] == pytest.approx(1.0, abs=1e-9)
+    res = CLAIMS.compute(s, "ch7.af_inside_unit_circle")
+    assert res.value is False and "z = 1" in res.note
+
+
+@claim_test(DOC, "ch7.q_positive_definite")
+def test_q_is_only_semidefinite(s):
+    from abglib.replications.antenna.kalman import extended_model
+
+    order = 5
+    v_w = s.vw_filter(s.vw_opt5)
+    at, ct, gt = taylor_model(order, s.dt)
+    em = extended_model(s.ctrl.A, s.ctrl.B, s.ctrl.C, at, ct, gt)
+    n = em.n_antenna
+    # eq 7.15 iterated as printed, Q <- V_w + A Q [I + M^T V_v^-1 M Q]^-1 A^T, from Q = V_w:
+    # V_w has no antenna part (w = 0) and A is block diagonal, so the antenna block stays 0
+    vw = v_w * em.G @ em.G.T
+    vvi = np.linalg.inv(s.vv)
+    q = vw.copy()
+    for _ in range(300):
+        q = vw + em.A @ q @ np.linalg.solve(np.eye(q.shape[0]) + em.M.T @ vvi @ em.M @ q, em.A.T)
+    assert np.max(np.abs(q[:n, :n])) == 0.0 and np.max(np.abs(q[:n, n:])) == 0.0
+    q_obj, _ = _object_dare(s, order, v_w)
+    assert np.linalg.eigvalsh(q_obj).min() > 0  # positive definite on the object block
+    t = s.kalman_af
+    assert (t["q_rank"] == t["q_size"] - n).all() and (t["q_min_eig"] == 0.0).all()
+    assert CLAIMS.compute(s, "ch7.q_positive_definite").value is False
+
+
+@claim_test(DOC, "sec82.vw_list_order")
+def test_sec82_list_contradicts_sec83(s):
+    # whatever the lost exponents k, 5 * 10^-k is never 0.1 (sec. 8.3's third order), and
+    # 0.1 is never 5 * 10^-k (sec. 8.2's fifth order); the reversed list fits both
+    fives = [5 * 10.0**-k for k in range(0, 16)]
+    assert not any(np.isclose(f, 0.1, rtol=1e-9) for f in fives)
+    assert float(s.printed("sec82.vw_opt_third")) == 0.1
+    res = CLAIMS.compute(s, "sec82.vw_list_order")
+    assert res.value is False and "(checked)" in res.note

@@ -448,5 +448,52 @@ class AntennaStudy(Study):
             ]
         )
 
+    # ----------------------------------------------------------------- ch. 7 (added in v0.4.0)
+    @cached_property
+    def kalman_af(self) -> pd.DataFrame:
+        """The Kalman designs of ch. 8 (fifth and third order at their optimal V_w, the
+        other settings of Figs I.14 and I.16) against the sentence after eq 7.24: "the
+        eigenvalues of matrix A_f all lie inside the unit circle, because Q is the
+        symmetric, positive definite solution of the discrete matrix Ricatti equation".
+
+        Per design: the spectral radius of A_f (eq 7.20) and of its object block, the
+        antenna block's eigenvalue nearest the unit circle, the extreme eigenvalues and
+        the rank of Q (eq 7.15), and the largest |entry| of K_f's antenna rows (w = 0,
+        sec. 7.3, puts no noise on the antenna states).
+        """
+        from .kalman import extended_model, kalman_gains
+        from .objectmodel import taylor_model
+
+        c = self.ctrl
+        n = c.A.shape[0]
+        names = ("model", "optimum", "measurement")
+        # the three fifth-order settings of Figs I.14-I.15 and the third-order optimum
+        designs = [(5, w, v) for w, v in zip(names, self.settings[5], strict=True)]
+        designs.append((3, "optimum", self.vw_optimum(3)))
+        rows = []
+        for order, which, v_w in designs:
+            at, ct, gt = taylor_model(order, self.dt)
+            em = extended_model(c.A, c.B, c.C, at, ct, gt)
+            kg = kalman_gains(em, self.vw_filter(v_w), self.vv)
+            q = 0.5 * (kg.Q + kg.Q.T)
+            ev = np.linalg.eigvalsh(q)
+            rank = int(np.sum(ev > 1e-12 * ev.max()))
+            rows.append(
+                {
+                    "order": order,
+                    "setting": which,
+                    "v_w": float(v_w),
+                    "radius_af": float(np.max(np.abs(np.linalg.eigvals(kg.Af)))),
+                    "radius_object": float(np.max(np.abs(np.linalg.eigvals(kg.Af[n:, n:])))),
+                    "radius_antenna": float(np.max(np.abs(np.linalg.eigvals(kg.Af[:n, :n])))),
+                    "q_min_eig": float(ev.min()),
+                    "q_max_eig": float(ev.max()),
+                    "q_rank": rank,
+                    "q_size": int(q.shape[0]),
+                    "kf_antenna_max": float(np.max(np.abs(kg.Kf[:n]))),
+                }
+            )
+        return pd.DataFrame(rows)
+
     def tables(self) -> dict[str, pd.DataFrame]:
         return {t: getattr(self, t) for t in TABLES}
