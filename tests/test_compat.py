@@ -881,3 +881,27 @@ def test_the_snakefile_scan_lets_public_use_be():
         "rule a:\n    input:\n        rules.b.output,\n    run:\n        self._x = 1\n"
     )
     assert snakefile_findings(source) == []
+
+
+def test_compat_imports_no_upstream_library_until_used():
+    """abglib._compat and its Snakemake, IPython and matplotlib modules import with those
+    libraries blocked (the tracker core installs without them); each imports its library
+    only inside the accessor that needs it."""
+    code = (
+        "import sys\n"
+        "class Block:\n"
+        "    def find_spec(self, name, path=None, target=None):\n"
+        "        if name.split('.')[0] in {'snakemake', 'IPython', 'traitlets', 'matplotlib',\n"
+        "                                  'snakemake_interface_executor_plugins'}:\n"
+        "            raise ImportError(f'blocked: {name}')\n"
+        "sys.meta_path.insert(0, Block())\n"
+        "import abglib._compat, abglib._compat.snakemake, abglib._compat.ipython\n"
+        "import abglib._compat.matplotlib\n"
+        "try:\n"
+        "    abglib._compat.snakemake.script_object_class()\n"
+        "except ImportError as err:\n"
+        "    print('used:', err)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr[-2000:]
+    assert "used: blocked: snakemake" in out.stdout
