@@ -165,10 +165,15 @@ T345_MISMATCH = {
     "table3.exact.0.488",
     "table4.approx.0.1",
     "table4.approx.0.488",
-    "table5.exact.0.3",
     "table5.exact.0.488",
-    "table5.approx.0.3",
     "table5.approx.0.488",
+}
+# v0.4.0: the reading catalogue (abglib.verdicts.readings) explains two of them as slips
+# of the last printed digit, at a chance far below the budget: 0.1332450 rounded twice
+# (.133245 -> .13325) and sqrt(beta/2) = 0.1333861 truncated (.13338)
+T345_EXPLAINED = {
+    "table5.exact.0.3": "typo:double rounding",
+    "table5.approx.0.3": "typo:truncated",
 }
 
 
@@ -199,6 +204,9 @@ def t345_typed(key):
 def test_tables_3_to_5(s, key, comparison):
     assert value(s, key) == pytest.approx(t345_typed(key), rel=1e-7)
     want = "mismatch" if key in T345_MISMATCH else "match"
+    if key in T345_EXPLAINED:
+        want = "explained"
+        assert comparison.loc[key, "reading"] == T345_EXPLAINED[key]
     assert comparison.loc[key, "verdict"] == want
 
 
