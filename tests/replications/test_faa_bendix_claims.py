@@ -265,8 +265,10 @@ def test_caption_gain_is_the_memo_gain_cut_to_two_decimals(study, judged, key):
     truncated = np.floor(round(float(memo_printed) * 1000) / 10) / 100
     assert res.readings[0].value == pytest.approx(truncated, abs=1e-12)
     assert float(study.printed(key)) == pytest.approx(truncated, abs=1e-12)
-    # only beta = .066 (T = 1 s) is more than half a unit from its caption
-    expected = "explained" if (p, name) == (1, "beta") else "match"
+    # only beta = .066 (T = 1 s) is more than half a unit from its caption; v0.4.0: its
+    # truncation no longer explains the one-digit caption '0.06' (an unrelated one-digit
+    # number lands on it with chance 1/9 > 0.05, abglib.verdicts.readings)
+    expected = "mismatch" if (p, name) == (1, "beta") else "match"
     assert judged[0].loc[key, "verdict"] == expected
 
 
@@ -303,7 +305,11 @@ def test_caption_sfy_reconstruction_and_its_robustness(study, judged, key):
     # at 8 divisions the T = 1 s inputs (peak 1 and 10) need the next decade: flip
     if p == 1:
         assert row["verdict"] == "not_reproducible" and row["robust"] == "false"
-        assert "mismatch at 8, match at 10-12" in row["note"]
+        # v0.4.0: at 8 divisions the scale is a power of ten off, which the reading
+        # catalogue explains as a shifted decimal point for the ramp's '1.00' (chance
+        # 1/900), not for the impulse's two-digit '0.10' (1/90, above the budget)
+        at8 = "explained" if kind == "ramp" else "mismatch"
+        assert f"{at8} at 8, match at 10-12" in row["note"]
     else:
         assert row["verdict"] == "match" and row["robust"] == "true"
     assert len(points[points["key"] == key]) == 3
@@ -325,8 +331,9 @@ def test_captions_table_and_sfy(study):
 # --------------------------------------------------------------------------- the report tables
 def test_verdict_counts(judged):
     counts = judged[0]["verdict"].value_counts().to_dict()
-    # + 1 mismatch in v0.4.0: captions.ramp.T5.predicted_twice (a misprinted caption)
-    assert counts == {"match": 85, "explained": 3, "mismatch": 1, "not_reproducible": 19}
+    # + 1 mismatch in v0.4.0: captions.ramp.T5.predicted_twice (a misprinted caption);
+    # v0.4.0: the two T = 1 s BETA= 0.06 captions are no longer explained (chance 1/9)
+    assert counts == {"match": 85, "explained": 1, "mismatch": 3, "not_reproducible": 19}
 
 
 def test_gains_table_columns(study):
