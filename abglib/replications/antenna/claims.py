@@ -91,3 +91,25 @@ def _vw_list(s):
         + " and with 'the lower the order, the larger the optimal V_w'; the reconstructed "
         "model's optima fall with the order too (row sec82.lower_order_larger_vw)",
     )
+
+
+@CLAIMS.claim("ch9.acceleration_hardly", depends_on=EST)
+def _acc_hardly(s):
+    t = s.acceleration_term.set_index("k")
+    base = t.loc[0.0]
+    parts = [
+        f"k = {k:g}: max |e| {r.e:.2g} (x {r.e / base.e:.3g}), max |u| {r.u:.4g} "
+        f"({100 * (r.u / base.u - 1):+.2g} %)"
+        for k, r in t.drop(index=0.0).iterrows()
+    ]
+    est = s.stats(5, s.vw_opt5).e_med
+    return Result(
+        None,
+        "the functional with an acceleration term and its weight are not given; on the "
+        "reconstructed antenna (normal track, fifth order, exact object states) with "
+        f"q_a = k q / omega^4 added: without it max |e| {base.e:.2g}, max |u| {base.u:.4g}; "
+        + "; ".join(parts)
+        + f". The control input is hardly affected; the tracking error is, by orders of "
+        f"magnitude, though it stays small beside the {est:.3g} of the estimated system of "
+        "ch. 8 (median over the object phases), where the text's judgement was made",
+    )

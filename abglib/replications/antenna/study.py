@@ -495,5 +495,59 @@ class AntennaStudy(Study):
             )
         return pd.DataFrame(rows)
 
+    # ----------------------------------------------------------------- ch. 9 (added in v0.4.0)
+    #: Weights of an acceleration-error term, as multiples of ``q / omega^4``: the weight
+    #: at which the two terms cost the same for an error sine at the track's omega.
+    ACC_WEIGHTS = (0.01, 0.1, 1.0)
+
+    @cached_property
+    def acceleration_term(self) -> pd.DataFrame:
+        """Ch. 9: "taking the acceleration into account also hardly affects the performance".
+
+        The functional of eq 2.5 with the acceleration error added,
+        ``sum q e^2 + q_a (phi_a'' - z'')^2 + r u^2`` (the text gives neither form nor
+        weight): the antenna's acceleration is ``Ac[3] x`` (the continuous model's
+        ``phi_a''`` row, no direct input), the object's the Taylor state ``z''``. Per weight
+        ``q_a = k q / omega^4`` (:data:`ACC_WEIGHTS`): the exact steady-state amplitudes of
+        the tracking error and the control input on the normal track with the fifth-order
+        prediction (exact object states, as ch. 6), by the frequency response of the closed
+        loop; ``k = 0`` is the design of the text. The Riccati equation (eq 2.12) is solved
+        by scipy's DARE (the value iteration converges too slowly at ``k = 1``).
+        """
+        import scipy.linalg
+
+        from .lq import tracker_matrices
+        from .model import continuous_model
+        from .objectmodel import taylor_model
+        from .preview import preview_gain
+
+        c, w, order = self.ctrl, self.omega, 5
+        ac, _, _ = continuous_model(self.params)
+        at, ct, _ = taylor_model(order, self.dt)
+        ct_acc = np.zeros_like(ct)
+        ct_acc[0, 2] = 1.0
+        cy, cty = np.vstack([c.C, ac[3:4]]), np.vstack([ct, ct_acc])
+        zc = -1j * self.amp * (1j * w) ** np.arange(at.shape[0])  # [z, z', ...] of a sin
+        rows = []
+        for k in (0.0, *self.ACC_WEIGHTS):
+            qy = np.diag([self.q, k * self.q / w**4])
+            p = scipy.linalg.solve_discrete_are(c.A, c.B, cy.T @ qy @ cy, [[self.r]])
+            tm = tracker_matrices(c.A, c.B, cy, qy, [[self.r]], p=p)
+            kt = preview_gain(tm, at, cty)
+            acl = c.A - c.B @ tm.K
+            x = np.linalg.solve(
+                np.exp(1j * w * self.dt) * np.eye(acl.shape[0]) - acl, -c.B @ (kt @ zc)
+            )
+            rows.append(
+                {
+                    "k": k,
+                    "q_a": k * self.q / w**4,
+                    "e": float(abs((c.C @ x)[0] - zc[0])),
+                    "u": float(abs((-tm.K @ x - kt @ zc)[0])),
+                    "acc_err": float(abs((ac[3:4] @ x)[0] - zc[2])),
+                }
+            )
+        return pd.DataFrame(rows)
+
     def tables(self) -> dict[str, pd.DataFrame]:
         return {t: getattr(self, t) for t in TABLES}
