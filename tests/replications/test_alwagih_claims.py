@@ -120,10 +120,17 @@ def test_tables_1_2_are_not_reproducible_and_quote_the_reconstruction(study, dir
 # printed Tables 1-2 (mismatch) or only through the rounding of Tables 1-2 (explained)
 T3456_MISMATCH = {
     "t3.M1.X.M3", "t3.M1.Y.M3", "t3.M1.Y.M4", "t3.M2.X.M3", "t3.M2.X.M4", "t3.M2.Y.M3",
-    "t3.M2.Y.M4", "t4.M1.X.M3", "t4.M2.X.M3", "t4.M2.X.M4", "t4.M2.Y.M3", "t5.e1.Y.M3",
-    "t5.e4.Y.M4", "t5.e5.Y.M4", "t6.e1.Y.M4", "t6.e1.Y.M5", "t6.e2.Y.M3", "t6.e3.Y.M4",
+    "t3.M2.Y.M4", "t4.M1.X.M3", "t4.M2.X.M3", "t4.M2.X.M4", "t4.M2.Y.M3",
+    "t5.e4.Y.M4", "t5.e5.Y.M4",
 }  # fmt: skip
-T3456_EXPLAINED = {"t5.e2.X.M4", "t6.e3.Y.M3", "t6.e5.Y.M4"}
+# v0.4.0: five more explained by the reading catalogue (abglib.verdicts.readings), each a
+# slip of the printed digits at a chance below 1e-4: truncated instead of rounded
+# (t5.e1.Y.M3 77.0790, t6.e1.Y.M4 6.6500, t6.e3.Y.M4 3.8882), a digit dropped
+# (t6.e1.Y.M5 92.60958 -> 92.6098), two digits transposed (t6.e2.Y.M3 69.5386 -> 69.5368)
+T3456_EXPLAINED = {
+    "t5.e2.X.M4", "t6.e3.Y.M3", "t6.e5.Y.M4",
+    "t5.e1.Y.M3", "t6.e1.Y.M4", "t6.e3.Y.M4", "t6.e1.Y.M5", "t6.e2.Y.M3",
+}  # fmt: skip
 
 
 def _judge(study, key):
