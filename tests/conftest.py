@@ -10,13 +10,15 @@ have a unit test from what exists, whatever a run selects. With ``ABGLIB_CLAIM_M
 set, the ``claim`` marks of the collected tests are also written there as JSON (the coverage
 test collects ``tests/replications`` in a subprocess that way when its session did not).
 
-``require(reason)``: a test that needs a tool CI installs (Chromium, ...) skips without it
-on a developer's machine and fails under CI (``CI`` set to anything but ``""``, ``0`` or
-``false``), so that a missing install cannot turn a check into a skip there.
+``require(reason)`` and ``require_module(name)``: a test that needs a tool or an optional
+package that CI installs (Chromium, git, nbclient, filterpy, snakemake) skips without it on a
+developer's machine and fails under CI (``CI`` set to anything but ``""``, ``0``, ``false``
+or ``no``), so that a missing install cannot turn a check into a skip there.
 """
 
 from __future__ import annotations
 
+import importlib
 import json
 import os
 from pathlib import Path
@@ -42,6 +44,17 @@ def require(reason: str) -> None:
     if on_ci():
         pytest.fail(f"CI={os.environ['CI']} but {reason}", pytrace=False)
     pytest.skip(reason)
+
+
+def require_module(name: str):
+    """``pytest.importorskip(name)``, failing instead under CI (where ``.[dev]`` installs it)."""
+    if on_ci():
+        try:
+            return importlib.import_module(name)
+        except ImportError as exc:
+            msg = f"CI={os.environ['CI']} but {name} cannot be imported: {exc}"
+            pytest.fail(msg, pytrace=False)
+    return pytest.importorskip(name)
 
 
 def claim_marks(items) -> dict[str, list[str]]:

@@ -206,8 +206,8 @@ def test_real_v020_to_v030_lists_the_replication_layer_verdict_changes():
     """The verdict changes the replication-layer issue made (its closing note): Huang 5,
     Al-Wagih 16, antenna 7; every v0.2.0 row paired by item, quantity and printed value."""
     old, new = REPO / "reports" / "v0.2.0", REPO / "reports" / "v0.3.0"
-    if not (old.is_dir() and new.is_dir()):
-        pytest.skip("the committed releases reports/v0.2.0 and v0.3.0 are not here")
+    # committed releases are frozen history, never removed (CONTRACTS.md §4)
+    assert old.is_dir() and new.is_dir(), "the committed releases reports/v0.2.0, v0.3.0"
     ch = diff_folders(old, new)
     t = ch.table
     verdicts = t[t["change"] == "verdict"]

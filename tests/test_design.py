@@ -14,7 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.linalg import expm
 
-from abglib import AbglibValueError, Gains, design, track
+from abglib import AbglibValueError, Gains, track
 from abglib.conventions import to_huang
 from abglib.design import (
     BENDIX_CAPTIONS,
@@ -70,28 +70,17 @@ def enbw_twin(gains: Gains, dt: float, n: int = 40000) -> float:
     return float(np.sum(h * h) / (2.0 * dt))
 
 
-def _real_enbw():
-    try:
-        from abglib.analysis import enbw
-    except (ImportError, AttributeError):
-        return None
-    return enbw
-
-
 @pytest.fixture
-def enbw_func(monkeypatch):
-    """abglib.analysis.enbw once it exists; until then the twin, patched into design."""
-    real = _real_enbw()
-    if real is None:
-        monkeypatch.setattr(design, "_enbw", enbw_twin)
-        return enbw_twin
-    return lambda g, dt: float(real(g, dt))
+def enbw_func():
+    """abglib.analysis.enbw as a float (what design's rules invert)."""
+    from abglib.analysis import enbw
+
+    return lambda g, dt: float(enbw(g, dt))
 
 
 def test_analysis_enbw_agrees_with_twin():
-    real = _real_enbw()
-    if real is None:
-        pytest.skip("abglib.analysis.enbw not available yet")
+    from abglib.analysis import enbw as real
+
     for g in (huang_type1(0.3), huang_type2(0.7, 3), Gains(0.5, 0.2, 0.02)):
         assert float(real(g, 0.01)) == pytest.approx(enbw_twin(g, 0.01), rel=1e-9)
 

@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 from abglib import AbglibValueError, Gains, track
 from abglib.engine import OUTPUTS
 
+from .conftest import require_module
 from .reference import literal_track
 
 RTOL = 1e-12  # rounding only: the engine and the reference evaluate the same expressions
@@ -150,7 +151,7 @@ def test_outputs_subset():
 
 
 def test_matches_filterpy_gh_and_ghk():
-    gh = pytest.importorskip("filterpy.gh")
+    gh = require_module("filterpy.gh")  # skips without it; fails under CI
     z = np.random.default_rng(9).normal(size=500).cumsum()
     dt = 0.5
     # FilterPy's g, h are alpha, beta; its k is gamma / 2 (GHKFilter.update uses 2k/dt^2)

@@ -16,6 +16,8 @@ import pytest
 from abglib.reporting.execute import CellExecutionError, CellTimeoutError, execute_notebook
 from abglib.reporting.render import render_notebook, strip_volatile
 
+from .conftest import require_module
+
 
 def notebook(*sources, tags=None):
     nb = nbformat.v4.new_notebook()
@@ -246,7 +248,7 @@ def test_render_notebook_injects_parameters_and_writes_the_page(tmp_path):
 
 def test_in_process_and_kernel_give_the_same_notebook(tmp_path):
     """The two engines agree output for output (nbclient and ipykernel: extra 'kernel')."""
-    pytest.importorskip("nbclient")
+    require_module("nbclient")  # skips without it; fails under CI
     from abglib.reporting.render import _execute_in_kernel
 
     nb = notebook(

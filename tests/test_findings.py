@@ -10,6 +10,8 @@ from abglib import AbglibValueError, __version__
 from abglib.reporting.cli import main
 from abglib.reporting.findings import END, START, render_findings, update_readme
 
+from .conftest import require
+
 REPO = Path(__file__).resolve().parents[1]
 
 
@@ -67,7 +69,7 @@ def test_update_readme_between_markers(tmp_path, capsys):
 def test_the_readme_holds_the_findings_of_the_committed_release():
     release = REPO / "reports" / f"v{__version__}"
     if not (release / "scorecard.csv").is_file():
-        pytest.skip(f"no committed release {release} yet")
+        require(f"no committed release {release} yet")  # skips; fails under CI
     assert update_readme(
         REPO / "README.md", REPO / "docs" / "readme_findings.md", release, check=True
     ), "README.md findings are stale: run `abglib findings`"

@@ -27,6 +27,8 @@ from abglib.reporting.provenance import (
 from abglib.reporting.render import write_index
 from abglib.reporting.versions import folder_version, version_key
 
+from .conftest import require
+
 
 def test_config_hash_ignores_key_order_and_sees_values():
     a = {"x": 1, "y": {"b": [1, 2], "a": 0.5}}
@@ -61,7 +63,7 @@ def test_git_commit_in_a_repository(tmp_path):
         subprocess.run(["git", *env, "-C", str(tmp_path), "add", "f"], check=True)
         subprocess.run(["git", *env, "-C", str(tmp_path), "commit", "-qm", "m"], check=True)
     except (OSError, subprocess.CalledProcessError):
-        pytest.skip("git not available")
+        require("git not available")
     commit = git_commit(tmp_path)
     assert commit is not None and len(commit) == 40
     # a rebuilt committed report does not make the code dirty; any other change does
