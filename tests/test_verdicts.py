@@ -250,3 +250,29 @@ def test_about_is_judged_across_its_range():
     out = judge("d", _pub("k", "20"), 20.9, "")
     assert out["verdict"] == "mismatch" and "robust" not in out
     assert vague_tolerances(20.0, 0.5, find_vague("nearly")) == [(-0.5, 0.5), (-2.0, 0.5)]
+
+
+# ----------------------------------------------------------------------- changes
+def test_changes_name_the_reading_that_changed_a_verdict(tmp_path):
+    import pandas as pd
+
+    from abglib.reporting.changes import diff_tables
+
+    base = {"doc": "d", "quantity": "q", "tolerance": 5e-6, "depends_on": "", "robust": ""}
+    old = pd.DataFrame(
+        [
+            {**base, "item": "a", "published": "0.13338", "reproduced": 0.1333861},
+            {**base, "item": "b", "published": "0.01", "reproduced": 0.0099},
+        ]
+    ).assign(verdict=["mismatch", "explained"], note=["x", "y"])
+    new = old.assign(
+        verdict=["explained", "mismatch"],
+        reading=["typo:truncated", ""],
+        chance=[1.11e-05, None],
+    )
+    old.to_csv(tmp_path / "old.csv", index=False)
+    new.to_csv(tmp_path / "new.csv", index=False)
+    ch = diff_tables({"d": tmp_path / "old.csv"}, {"d": tmp_path / "new.csv"})
+    notes = ch.table.set_index("item")["note"]
+    assert notes["a"].startswith("explained by the reading typo:truncated (chance 1.11e-05)")
+    assert notes["b"].startswith("the explaining reading is no longer accepted")

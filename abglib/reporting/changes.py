@@ -30,9 +30,11 @@ tolerance  the tolerance the move was judged against (empty for a qualitative ro
 note       why: the newer row's note for a verdict change, the move in tolerances, ...
 ========== ==============================================================================
 
-Columns that only one version has (``depends_on`` and ``robust`` came with v0.3.0) are
-ignored for pairing; ``depends_on`` and ``robust`` changes are mentioned in the note of a
-row that changed for another reason.
+Columns that only one version has (``depends_on`` and ``robust`` came with v0.3.0,
+``reading`` and ``chance`` with v0.4.0) are ignored for pairing; their changes are
+mentioned in the note of a row that changed for another reason, and a verdict change's
+note starts with what changed it: the reading now accepted (with its chance), the reading
+withdrawn, or a flip across the plausible inputs.
 """
 
 from __future__ import annotations
@@ -207,9 +209,29 @@ def _move(old: str, new: str, tol: str) -> tuple[bool, str]:
     return moved, f"moved by {delta:.3g} ({abs(delta) / t:.3g} tolerances of {t:g})"
 
 
+def _why(o: Mapping, n: Mapping) -> list[str]:
+    """What changed a verdict, first in its note: the reading that now explains the row
+    (``reading``, ``chance``: v0.4.0), the one withdrawn, or the robustness result."""
+    a, b = _norm(o.get("reading", "")), _norm(n.get("reading", ""))
+    why = []
+    if b and b != a:
+        why.append(f"explained by the reading {b} (chance {_norm(n.get('chance', ''))})")
+    if a and a != b:
+        why.append(f"reading {a} no longer accepted")
+    if o["verdict"] == "explained" and not (a or b) and "reading" in n:
+        why.append(
+            "the explaining reading is no longer accepted (its look-elsewhere chance is above "
+            "the budget, or the rows of its sentence contradict it)"
+        )
+    ro, rn = _norm(o.get("robust", "")), _norm(n.get("robust", ""))
+    if rn == "false" and ro != "false":
+        why.append("the verdict flips across the plausible inputs (robust=false)")
+    return why
+
+
 def _extra(o: Mapping, n: Mapping) -> list[str]:
     notes = []
-    for col in ("depends_on", "robust"):
+    for col in ("depends_on", "robust", "reading", "chance"):
         a, b = _norm(o.get(col, "")), _norm(n.get(col, ""))
         if a != b and (a or b):
             notes.append(f"{col}: {a or '(empty)'} → {b or '(empty)'}")
@@ -256,7 +278,7 @@ def diff_tables(
             if o["verdict"] != n["verdict"]:
                 kind = "verdict"
                 note = "; ".join(
-                    [_norm(n.get("note", ""))] + ([how_moved] if moved else []) + extra
+                    _why(o, n) + [_norm(n.get("note", ""))] + ([how_moved] if moved else []) + extra
                 )
             elif moved:
                 kind = "moved"
