@@ -276,3 +276,26 @@ def test_changes_name_the_reading_that_changed_a_verdict(tmp_path):
     notes = ch.table.set_index("item")["note"]
     assert notes["a"].startswith("explained by the reading typo:truncated (chance 1.11e-05)")
     assert notes["b"].startswith("the explaining reading is no longer accepted")
+
+
+def test_non_matches_shows_the_reading_beside_the_verdict():
+    import pandas as pd
+
+    from abglib.reporting.compare import non_matches
+
+    comp = pd.DataFrame(
+        {
+            "item": ["a", "b"],
+            "published": ["1", "0.13338"],
+            "reproduced": ["1", "0.1333861"],
+            "verdict": ["match", "explained"],
+            "note": ["", "truncated"],
+            "reading": ["", "typo:truncated"],
+            "chance": [None, 1.11e-05],
+        }
+    )
+    out = non_matches(comp)
+    assert list(out.columns) == [
+        "item", "published", "reproduced", "verdict", "reading", "chance", "note"
+    ]  # fmt: skip
+    assert list(out["reading"]) == ["typo:truncated"]

@@ -420,9 +420,12 @@ def scorecard(comparisons: Iterable[pd.DataFrame]) -> pd.DataFrame:
 
 def non_matches(comparison: pd.DataFrame) -> pd.DataFrame:
     """The rows of one ``comparison.csv`` whose verdict is not ``match``, with the columns a
-    reader needs to judge them (``item, published, reproduced, verdict, note``)."""
+    reader needs to judge them (``item, published, reproduced, verdict, note``, and from
+    v0.4.0 the explaining ``reading`` and its ``chance`` beside the verdict)."""
     cols = ["item", "published", "reproduced", "verdict", "note"]
     missing = sorted(set(cols) - set(comparison.columns))
     if missing:
         raise AbglibValueError(f"comparison table lacks columns {missing}")
+    if {"reading", "chance"} <= set(comparison.columns):
+        cols = [*cols[:4], "reading", "chance", "note"]
     return comparison.loc[comparison["verdict"] != "match", cols]
