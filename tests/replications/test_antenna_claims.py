@@ -938,3 +938,36 @@ def test_acceleration_term_by_time_domain_simulation(s):
     assert abs(t.loc[1.0, "u"] / t.loc[0.0, "u"] - 1) < 0.01
     assert t.loc[k, "e"] / t.loc[0.0, "e"] > 100
     assert CLAIMS.compute(s, "ch9.acceleration_hardly").value is None
+
+
+@claim_test(DOC, "sec82.off_optimum_character")
+def test_off_optimum_estimation_errors_sine_or_noise_like(s):
+    from abglib.replications.antenna.study_estimation import n_steps_for
+
+    # independent route: the simulator called directly, and the share of the error's power
+    # in the periodogram bins within 30 % of omega (not a least-squares sine fit)
+    shares = []
+    for v_w in s.settings[5]:
+        r = simulate_phases(
+            s.params,
+            s.ctrl,
+            amplitude=s.amp,
+            omega=s.omega,
+            n_steps=n_steps_for(s.omega, s.dt, s.sim),
+            phases=phase_grid(s.cfg["kalman"]["phases"]),
+            mode="kalman",
+            order=5,
+            v_w=s.vw_filter(v_w),
+            v_v=s.vv,
+            resolution=s.res,
+        )
+        sel = r["t"] >= s.transient
+        e = r["xt_err"][:, 0, sel]
+        e = e - e.mean(axis=1, keepdims=True)
+        power = np.abs(np.fft.rfft(e, axis=1)) ** 2
+        freq = 2 * np.pi * np.fft.rfftfreq(e.shape[1], d=s.dt)
+        near = np.abs(freq - s.omega) <= 0.3 * s.omega
+        shares.append(float(np.median(power[:, near].sum(axis=1) / power.sum(axis=1))))
+    model, opt, meas = shares
+    assert model > opt > meas
+    assert value(s, "sec82.off_optimum_character") is True

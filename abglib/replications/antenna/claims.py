@@ -113,3 +113,29 @@ def _acc_hardly(s):
         f"magnitude, though it stays small beside the {est:.3g} of the estimated system of "
         "ch. 8 (median over the object phases), where the text's judgement was made",
     )
+
+
+def _estimation_sine_share(s, v_w) -> float:
+    """Median over the object phases of the share of the position-estimation error's
+    variance (after the transient) in a sine at the track's omega (fifth order)."""
+    r = s.stats(5, v_w, keep=True).run
+    sel = r["t"] >= s.transient
+    t = r["t"][sel]
+    basis = np.column_stack([np.sin(s.omega * t), np.cos(s.omega * t), np.ones_like(t)])
+    shares = []
+    for e in r["xt_err"][:, 0, sel]:
+        coef, *_ = np.linalg.lstsq(basis, e, rcond=None)
+        shares.append(1.0 - np.var(e - basis @ coef) / np.var(e))
+    return float(np.median(shares))
+
+
+@CLAIMS.claim("sec82.off_optimum_character", depends_on=(*EST, SPREAD))
+def _off_character(s):
+    model, opt, meas = (_estimation_sine_share(s, v) for v in s.settings[5])
+    return Result(
+        bool(model > opt and meas < opt),
+        f"share of the position-estimation error's variance in a sine at omega = {s.omega:g} "
+        f"(median over the object phases): model emphasis {model:.3g}, optimum {opt:.3g}, "
+        f"measurement emphasis {meas:.3g} ('more sine like' read as a larger share than at "
+        "the optimum, 'more noise like' as a smaller one)",
+    )
