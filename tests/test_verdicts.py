@@ -248,7 +248,11 @@ def test_about_is_judged_across_its_range():
     assert "'about'" in out["note"]
     # without the word: half a unit in the last digit, no robustness from a word
     out = judge("d", _pub("k", "20"), 20.9, "")
-    assert out["verdict"] == "mismatch" and "robust" not in out
+    assert out["verdict"] == "mismatch" and "robust" not in out and "vague" not in out
+    # a match at half a unit is one under every reading: unchanged, robust
+    out = judge("d", _pub("k", "20", quantity="'about 20 %'"), 20.4, "")
+    assert (out["verdict"], out["tolerance"], out["note"]) == ("match", 0.5, "")
+    assert out["robust"] == "true" and out["vague"] == ("vague:about",)
     assert vague_tolerances(20.0, 0.5, find_vague("nearly")) == [(-0.5, 0.5), (-2.0, 0.5)]
 
 
@@ -299,3 +303,13 @@ def test_non_matches_shows_the_reading_beside_the_verdict():
         "item", "published", "reproduced", "verdict", "reading", "chance", "note"
     ]  # fmt: skip
     assert list(out["reading"]) == ["typo:truncated"]
+
+
+def test_read_published_accepts_an_optional_sentence_column(tmp_path):
+    from abglib.reporting.compare import read_published
+
+    head = "key,item,quantity,published,where"
+    (tmp_path / "a.csv").write_text(f"{head},sentence\nk1,i,q,7,p,s1\nk2,i,q,40,p,s1\n")
+    (tmp_path / "b.csv").write_text(f"{head}\nk3,i,q,1,p\n")
+    pub = read_published([tmp_path / "a.csv", tmp_path / "b.csv"])
+    assert list(pub["sentence"]) == ["s1", "s1", ""]

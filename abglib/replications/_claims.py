@@ -486,7 +486,7 @@ def evaluate(
         row = judged[-1].row
         vague = row.pop("robust", "")
         inputs = claim.inputs(pub.key)
-        row["depends_on"] = ";".join(inputs)
+        row["depends_on"] = ";".join((*inputs, *row.pop("vague", ())))
         row["robust"] = vague
         nominal_verdict = row["verdict"]
 
@@ -538,7 +538,7 @@ def evaluate(
                 by_set += [judged_at(under(k), pub, claim)[1:] for k in range(2, len(seeded) + 1)]
                 for k, (v, rep) in enumerate(by_set):
                     point("seed_set", "seeds", str(k), k == 0, rep, v)
-                row["depends_on"] = ";".join([*inputs, "seeds"])
+                row["depends_on"] = ";".join(x for x in (row["depends_on"], "seeds") if x)
         if inputs or by_set:
             parts = []
             causes = []

@@ -379,8 +379,10 @@ def build_comparison(
         r = rep.loc[row.key]
         j = _assess(doc, row, r["reproduced"], r.get("note", ""), alts.get(row.key, ()), overrides)
         vague = j.row.pop("robust", "")
+        words = j.row.pop("vague", ())
         for col in ("depends_on", "robust"):
             j.row[col] = _text(r.get(col, ""))
+        j.row["depends_on"] = ";".join(x for x in (j.row["depends_on"], *words) if x)
         if vague and not j.row["robust"]:
             j.row["robust"] = vague
         judged.append(j)

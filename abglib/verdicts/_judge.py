@@ -110,8 +110,9 @@ def judge(
     overrides=None,
     related: Mapping[str, Any] | None = None,
 ) -> dict:
-    """One row of ``comparison.csv`` (without ``depends_on``; ``robust`` only when a
-    vague word decides it).
+    """One row of ``comparison.csv`` (without ``depends_on``; ``robust`` and ``vague``,
+    the vague words judged across their range as ``('vague:about',)``, only when the
+    printed text carries one).
 
     Parameters
     ----------
@@ -172,7 +173,10 @@ def _assess(doc, row, value, note, alternatives=(), overrides=None, related=None
             ends = ["match" if lo <= abs_err <= hi else "mismatch" for lo, hi in windows]
             w = [x for x in words if x.kind == "relative"][0]
             span = f"{format_number(100 * w.low, 3)}-{format_number(100 * w.high, 3)} %"
-            if ends[0] == ends[1]:
+            out["vague"] = (f"vague:{w.word}",)
+            if v == "match":  # within half a unit: a match under every reading of the word
+                out["robust"] = "true"
+            elif ends[0] == ends[1]:
                 out["robust"] = "true"
                 vague_note = f"'{w.word}' read as within {span} ({w.basis}): {ends[0]} at both ends"
                 if ends[0] == "match":
