@@ -622,3 +622,28 @@ def test_claim_eq24_n2_is_eq9_10(study):
     # and the next one is the least-squares line through z(1..3), extrapolated (eq 24, n = 3)
     assert preds[3] == pytest.approx(np.polyval(np.polyfit(np.arange(3) * T, z[:3], 1), 3 * T))
     assert CLAIMS.compute(study, "claim.eq24_n2_is_eq9_10").value is True
+
+
+@claim_test(DOC, "claim.eq16_17")
+def test_claim_eq16_17(study):
+    # independent route: eigenvalues of the homogeneous recursion of eqs 3, 6, 8 (T = 1) in
+    # the state (x_p(k), v_s(k-1)): x_p(k+1) = (1 - a - b) x_p + v_s(k-1), v_s(k) = v_s(k-1) - b x_p
+    for a, b in ((0.5, 0.2), (0.9, 0.9), (1.5, 0.3), (0.1, 3.9)):
+        F = np.array([[1 - a - b, 1.0], [-b, 1.0]])
+        ev = np.sort_complex(np.linalg.eigvals(F).astype(complex))
+        d = np.sqrt(complex((a + b - 2) ** 2 - 4 * (1 - a)))
+        printed = np.sort_complex(np.array([(-(a + b - 2) + d) / 2, (-(a + b - 2) - d) / 2]))
+        np.testing.assert_allclose(printed, ev, atol=1e-12)
+    assert CLAIMS.compute(study, "claim.eq16_17").value is True
+
+
+@claim_test(DOC, "claim.intro_constant_velocity")
+def test_claim_intro_constant_velocity(study):
+    # independent route: the steady-state error of the prediction for a ramp input by the
+    # final-value theorem on eq 11: E(z)/Z(z) = 1 - G(z) has a double zero at z = 1
+    for a, b in ((0.3, 0.05), (0.8, 0.5), (1.2, 0.4)):
+        num = np.polysub([1.0, a + b - 2, 1 - a], [a + b, -a])  # denominator - numerator
+        assert np.polyval(num, 1.0) == pytest.approx(0.0, abs=1e-12)
+        assert np.polyval(np.polyder(num), 1.0) == pytest.approx(0.0, abs=1e-12)
+        assert np.polyval(np.polyder(num, 2), 1.0) != 0.0  # not of type 3: a lag under acceleration
+    assert CLAIMS.compute(study, "claim.intro_constant_velocity").value is True

@@ -580,3 +580,46 @@ def _eq24_n2(s):
         f"8 random series) it leaves v_s(2) = (x_m(2) - x_m(1))/T and x_p(3) = x_m(2) + T v_s(2) "
         f"of eqs 9-10 and the same later predictions as the two-point start, to {err:.1g} m",
     )
+
+
+@CLAIMS.claim("claim.eq16_17")
+def _eq16_17(s):
+    """Eqs 16-17, the roots of eq 15 as printed, against the poles of abglib's tracker."""
+    from ...analysis import poles
+
+    a, b = stability.random_gains(s.cfg["stability_seed"], 200)
+    disc = np.sqrt((a + b - 2) ** 2 - 4 * (1 - a) + 0j)
+    printed = np.sort_complex(np.stack([(-(a + b - 2) + disc) / 2, (-(a + b - 2) - disc) / 2], 1))
+    exact = np.sort_complex(np.asarray(poles(Gains(a, b)), dtype=complex))
+    err = float(np.max(np.abs(printed - exact)))
+    return Result(
+        err < 1e-9,
+        f"{a.size} random gain pairs (real and complex roots): largest difference between eqs "
+        f"16-17 and the tracker's poles {err:.1g}",
+    )
+
+
+@CLAIMS.claim("claim.intro_constant_velocity")
+def _intro_cv(s):
+    """Section 1: "a good performance for non-maneuvering, constant velocity targets", read
+    as: the one-step prediction follows a constant-velocity target without lag."""
+    from ...analysis import pole_radius
+    from ...engine import track
+
+    a, b = stability.random_gains(s.cfg["stability_seed"] + 3, 400)
+    # stable with a transient that dies out within the run (radius^3000 < 1e-13)
+    keep = np.asarray(pole_radius(Gains(a, b))) < 0.99
+    a, b = a[keep], b[keep]
+    T, v = 2.0, 150.0
+    z = 1000.0 + v * T * np.arange(3000.0)
+    # from a zero state, so that only the loop (not the two-point start) removes the lag
+    lag = np.abs(z - track(z, Gains(a[:, None], b[:, None]), dt=T, init="zero").x_pred)
+    worst = float(lag[:, -1].max())
+    first = float(lag[:, 1].min())
+    return Result(
+        worst < 1e-6 * v * T,
+        f"{a.size} random gain pairs with pole radius < 0.99, a {v:g} m/s target at T = {T:g} s "
+        f"from a zero state: prediction error at least {first:.3g} m at the second sample, "
+        f"below {1e-6 * v * T:g} m after 3000 samples (no steady-state lag: the loop is of "
+        "type 2)",
+    )
