@@ -1,0 +1,147 @@
+"""Sphinx configuration of abglib's API reference and gallery (``docs/README.md``).
+
+Build, offline, warnings as errors::
+
+    sphinx-build -W --keep-going -b html docs docs/_build/html
+
+No extension fetches anything: no intersphinx, equations as MathML at build time
+(``_ext/abglib_mathml.py``), the gallery runs locally, and the current release's reports
+(``reports/v<version>``) are copied into the site under the same relative path.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import sys
+from pathlib import Path
+
+DOCS = Path(__file__).resolve().parent
+REPO = DOCS.parent
+sys.path.insert(0, str(DOCS / "_ext"))
+sys.path.insert(0, str(REPO))
+
+os.environ.setdefault("MPLBACKEND", "Agg")
+
+import abglib  # noqa: E402
+
+project = "abglib"
+author = "the abglib authors"
+copyright = "the abglib authors, MIT licence"  # noqa: A001
+version = release = abglib.__version__
+#: the release folder whose reports the site carries (one site holds both)
+REPORTS = Path("reports") / f"v{release}"
+
+extensions = [
+    "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
+    "numpydoc",
+    "sphinx_gallery.gen_gallery",
+    "myst_parser",
+    "abglib_mathml",
+]
+
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+root_doc = "index"
+templates_path = ["_templates"]
+exclude_patterns = [
+    "_build",
+    "README.md",  # how to build this site (read on GitHub, not a page of it)
+    "readme_findings.md",  # the README's findings block, read by `abglib findings`
+    "**/GALLERY_HEADER.rst",
+    "examples/*.py",
+]
+
+# -- API reference: autosummary pages, numpydoc docstrings ------------------------------
+autosummary_generate = True
+autosummary_imported_members = True  # abglib.analysis re-exports its submodules' names
+autosummary_ignore_module_all = False  # a module's __all__ is its public API
+autodoc_default_options = {"member-order": "bysource"}
+autodoc_typehints = "none"  # the numpydoc Parameters sections say the types
+#: the modules of api.rst: an object is documented once, on the page of its home (the
+#: deepest of these modules that holds the module it is defined in); other modules that
+#: re-export it (``abglib.reporting.compare`` re-exports the verdict engine's names) link it
+API_MODULES = [
+    line.strip()
+    for line in (DOCS / "api.rst").read_text().splitlines()
+    if line.startswith("   abglib")
+]
+
+
+def api_home(modname: str, name: str) -> str:
+    """The documented module that is the home of ``modname.name`` (see API_MODULES)."""
+    import importlib
+
+    obj = getattr(importlib.import_module(modname), name)
+    defined = getattr(obj, "__module__", None)
+    if not isinstance(defined, str) or not callable(obj):
+        return modname  # constants are documented where they are listed
+    homes = [m for m in API_MODULES if defined == m or defined.startswith(m + ".")]
+    return max(homes, key=len) if homes else modname
+
+
+autosummary_context = {"api_home": api_home}
+# a function in the config cannot be pickled with the environment: Sphinx then rereads
+# every page on the next build (a clean build anyway, docs/README.md); nothing else is muted
+suppress_warnings = ["config.cache"]
+numpydoc_show_class_members = False
+numpydoc_class_members_toctree = False
+numpydoc_xref_param_type = False
+
+# -- equations: MathML at build time (no MathJax, no network) --------------------------
+html_math_renderer = "mathml"
+
+# -- gallery: every docs/examples/plot_*.py runs during the build -----------------------
+sphinx_gallery_conf = {
+    "examples_dirs": "examples",
+    "gallery_dirs": "auto_examples",
+    "filename_pattern": r"/plot_",
+    "download_all_examples": False,
+    "remove_config_comments": True,
+    "abort_on_example_error": True,
+    "show_memory": False,
+    "show_signature": False,
+    "matplotlib_animations": False,
+    "reset_modules": ("matplotlib",),
+    "within_subsection_order": "FileNameSortKey",
+    "min_reported_time": 1e9,
+}
+
+# -- HTML --------------------------------------------------------------------------------
+html_theme = "alabaster"
+html_title = f"abglib {release}"
+html_static_path = ["_static"]
+html_css_files = ["abglib.css"]
+html_theme_options = {
+    "description": "fixed-gain alpha-beta(-gamma) trackers",
+    "fixed_sidebar": False,
+    "page_width": "1180px",
+    "sidebar_width": "230px",
+    "show_powered_by": False,
+    "extra_nav_links": {f"Reports v{release}": f"{REPORTS.as_posix()}/index.html"},
+}
+html_show_sourcelink = False
+html_copy_source = False
+
+rst_prolog = f"""
+.. _current reports: {REPORTS.as_posix()}/index.html
+"""
+
+
+def _copy_reports(app, exception):
+    """Copy ``reports/v<version>`` into the built site at the same relative path."""
+    if exception is not None or app.builder.format != "html":
+        return
+    src = REPO / REPORTS
+    if not (src / "index.html").is_file():
+        raise FileNotFoundError(
+            f"{src} has no index.html: the site links the release's reports (abglib release)"
+        )
+    dst = Path(app.outdir) / REPORTS
+    if dst.exists():
+        shutil.rmtree(dst)
+    shutil.copytree(src, dst)
+
+
+def setup(app):
+    app.connect("build-finished", _copy_reports)
