@@ -25,7 +25,7 @@ methods
     The gain-selection methods M1-M5 of seed 001 (and a causal M5), batched.
 
 Layers installed with extras (``pip install "abglib[...]"``)
------------------------------------------------------------
+------------------------------------------------------------
 bench
     (``[bench]``) simulated radar datasets, tracker variants, Monte Carlo cell metrics,
     league tables, agreement with peer libraries.

@@ -382,6 +382,7 @@ def simpson_gamma(alpha, beta, *, allow_unstable: bool = False) -> Gains:
     allow_unstable : bool, default False
         Return the gains even where they are unstable (Simpson's condition does not
         imply stability: e.g. alpha = 1.99, gamma = 0.05 gives beta = 401).
+
     Returns
     -------
     Gains
@@ -392,6 +393,7 @@ def simpson_gamma(alpha, beta, *, allow_unstable: bool = False) -> Gains:
     AbglibValueError
         Inputs outside their domain, or (unless ``allow_unstable``) inputs whose Simpson
         gains are unstable, naming them and the pole radius.
+
     Notes
     -----
     Seed 000, eq 21, :math:`2\beta - \alpha(\alpha + \beta + \gamma/2) = 0`, solved
@@ -435,6 +437,7 @@ def simpson_beta(alpha, gamma, *, allow_unstable: bool = False) -> Gains:
     allow_unstable : bool, default False
         Return the gains even where they are unstable (Simpson's condition does not
         imply stability: e.g. alpha = 1.99, gamma = 0.05 gives beta = 401).
+
     Returns
     -------
     Gains
@@ -445,6 +448,7 @@ def simpson_beta(alpha, gamma, *, allow_unstable: bool = False) -> Gains:
     AbglibValueError
         Inputs outside their domain, or (unless ``allow_unstable``) inputs whose Simpson
         gains are unstable, naming them and the pole radius.
+
     Notes
     -----
     Seed 000, eq 21 solved for beta:
@@ -476,6 +480,7 @@ def simpson(alpha, beta=None, gamma=None, *, allow_unstable: bool = False) -> Ga
     allow_unstable : bool, default False
         Return the gains even where they are unstable (Simpson's condition does not
         imply stability: e.g. alpha = 1.99, gamma = 0.05 gives beta = 401).
+
     Returns
     -------
     Gains
@@ -486,6 +491,7 @@ def simpson(alpha, beta=None, gamma=None, *, allow_unstable: bool = False) -> Ga
     AbglibValueError
         Inputs outside their domain, or (unless ``allow_unstable``) inputs whose Simpson
         gains are unstable, naming them and the pole radius.
+
     Notes
     -----
     Seed 000, eq 21 (Simpson 1963), which minimises all the performance measures of

@@ -2,17 +2,23 @@
 
 Modules (one concept each; every public name is re-exported here):
 
-``_transfer``   transfer functions (seed 000 eqs 36-40), frequency response
-``_stability``  poles, pole radius, Jury conditions (seed 000 eqs 41-49),
-                seed 001 eqs 12-14 as printed, :func:`is_stable`
-``_features``   frequency-domain features: minimum at wT = pi (eq 50), exact wT at a gain
-                level (-3 dB, -6 dB, unity), exact peak and overshoot, and the printed
-                approximations of seed 000 eqs 51-59
-``_variance``   variance reduction factors: closed forms (seed 000 eqs 11-14, 25-27,
-                31-32) and the discrete Lyapunov solution (:func:`vrf`)
-``_transient``  transient measures D^2, A^2 (seed 000 eqs 15-20) and direct summation;
-                steady-state lag errors (seed 002)
-``_enbw``       equivalent noise bandwidth (seed 002 eq 8, one-sided) and a direct numeric route
+``_transfer``
+    transfer functions (seed 000 eqs 36-40), frequency response
+``_stability``
+    poles, pole radius, Jury conditions (seed 000 eqs 41-49),
+    seed 001 eqs 12-14 as printed, :func:`is_stable`
+``_features``
+    frequency-domain features: minimum at wT = pi (eq 50), exact wT at a gain
+    level (-3 dB, -6 dB, unity), exact peak and overshoot, and the printed
+    approximations of seed 000 eqs 51-59
+``_variance``
+    variance reduction factors: closed forms (seed 000 eqs 11-14, 25-27,
+    31-32) and the discrete Lyapunov solution (:func:`vrf`)
+``_transient``
+    transient measures D^2, A^2 (seed 000 eqs 15-20) and direct summation;
+    steady-state lag errors (seed 002)
+``_enbw``
+    equivalent noise bandwidth (seed 002 eq 8, one-sided) and a direct numeric route
 
 Seed 002's printed forms (eqs 3, 5-7, 8-14, the steady-state lag formulas) live with
 their document in :mod:`abglib.replications.huang.printed`.

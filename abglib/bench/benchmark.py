@@ -157,7 +157,7 @@ def run_cell(
 def check_cell(cell: pd.DataFrame, threshold: float, colours: Sequence[str] = ("white",)) -> None:
     """Raise :class:`abglib.metrics.VRFMismatchError` if a fixed-gain VRF check fails.
 
-    ``threshold`` is the simultaneous |t| bound (:func:`abglib.metrics.fail_threshold`);
+    ``threshold`` is the simultaneous ``|t|`` bound (:func:`abglib.metrics.fail_threshold`);
     only cells whose noise colour is in ``colours`` are checked (white noise: exact theory).
     """
     colour = str(cell["noise_colour"].iloc[0])

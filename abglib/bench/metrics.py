@@ -171,7 +171,7 @@ def settle_samples(gains: Gains, eps: float = 1e-8, cap: int = 10**6) -> int:
 
 
 def fail_threshold(runs: int, n_checks: int, family_alpha: float) -> float:
-    """|t| above which a measured VRF fails the build.
+    """``|t|`` above which a measured VRF fails the build.
 
     Bonferroni over ``n_checks`` simultaneous checks at family-wise error ``family_alpha``
     (two-sided), Student t with ``runs - 1`` degrees of freedom: with exact theory a

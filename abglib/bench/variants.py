@@ -16,9 +16,9 @@ methods M3-M5 of seed 001) through a ``run(z, dt, **params)`` callable returning
 
 Rules
 -----
-==================  =====================================================  ===============
+=================== =====================================================  ===================
 rule                parameters (``[]`` optional, default)                  abglib.design
-==================  =====================================================  ===============
+=================== =====================================================  ===================
 standard_theta      theta, [order=2]                                       standard_ab/abg
 standard_alpha      alpha, [order=2]                                       standard_from_alpha
 qd_m                m                                                      qd
@@ -32,7 +32,7 @@ bendix              period_s, [table="memo"]                               bendi
 growing_memory      [start=1]                                              growing_memory
 steady_state_kalman q, r, [order=2], [model="piecewise_constant"]          steady_state_kalman
 gains               alpha, beta, [gamma=0]                                 Gains (explicit)
-==================  =====================================================  ===============
+=================== =====================================================  ===================
 
 The methods of :mod:`abglib.methods` (seed 001, Al-Wagih & Abdulla) are
 registered too, as rules of kind ``"method"`` scored on their one-step predictions:
