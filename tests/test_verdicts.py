@@ -313,3 +313,18 @@ def test_read_published_accepts_an_optional_sentence_column(tmp_path):
     (tmp_path / "b.csv").write_text(f"{head}\nk3,i,q,1,p\n")
     pub = read_published([tmp_path / "a.csv", tmp_path / "b.csv"])
     assert list(pub["sentence"]) == ["s1", "s1", ""]
+
+
+def test_a_qualitative_reading_must_state_its_chance():
+    pub = _pub("k", "")
+    ok = Reading("as the prediction VRF", True, "s5", family="convention:predicted", chance=2e-9)
+    out = judge("d", pub, False, "fails as printed", [ok])
+    assert (out["verdict"], out["reading"], out["chance"]) == (
+        "explained",
+        "convention:predicted",
+        2e-9,
+    )
+    lucky = Reading("some reading", True, "s5", family="claim:x", chance=0.2)
+    assert judge("d", pub, False, "", [lucky])["verdict"] == "mismatch"
+    with pytest.raises(AbglibValueError, match="must give its chance"):
+        judge("d", pub, False, "", [Reading("r", True, "s5")])

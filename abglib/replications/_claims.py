@@ -567,7 +567,10 @@ def evaluate(
 
 
 def _alternatives(key: str, res: Result) -> list[Alternative]:
-    return [Alternative(key, r.description, r.value, r.section, r.family) for r in res.readings]
+    return [
+        Alternative(key, r.description, r.value, r.section, r.family, r.chance)
+        for r in res.readings
+    ]
 
 
 def _judged(doc: str, pub, res: Result, overrides):

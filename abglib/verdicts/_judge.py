@@ -17,7 +17,7 @@ import numpy as np
 
 from .._checks import AbglibValueError
 from ._numbers import format_number, parse_printed, tolerance_from_printed, within_tolerance
-from .readings import Explanation, Row, explain
+from .readings import THRESHOLD, Explanation, Row, explain
 from .vague import find_vague, vague_tolerances
 
 __all__ = ["Alternative", "Reading", "judge", "judge_sentences", "verdict"]
@@ -35,12 +35,18 @@ class Reading:
     ``family:detail`` label (``convention:two-sided bandwidth``, ...). It explains a
     non-matching row only within tolerance and at a look-elsewhere chance of at most
     :data:`~abglib.verdicts.readings.THRESHOLD` (readings with one label form one family).
+
+    A reading of a *qualitative* row (empty ``published``) has ``value`` True when the
+    check holds under the reading, and must give its ``chance``: a check has no printed
+    precision to derive it from, so the claim computes it (e.g. the probability that an
+    unrelated closed form agrees with the other quantity to the check's tolerance).
     """
 
     description: str
     value: float
     section: str
     family: str = HAND_WRITTEN
+    chance: float | None = None
 
 
 @dataclass(frozen=True)
@@ -53,6 +59,7 @@ class Alternative:
     value: float
     section: str
     family: str = HAND_WRITTEN
+    chance: float | None = None
 
     @property
     def description(self) -> str:
@@ -200,8 +207,19 @@ def _assess(doc, row, value, note, alternatives=(), overrides=None, related=None
             note = _explained_note(best, explanation) + (f". {note}" if note else "")
         else:
             note = (note or _unexplained(abs_err, tol)) + _tried_note(explanation)
-    elif v == "mismatch" and pub is None and not note:
-        note = "qualitative check does not hold"
+    elif v == "mismatch" and pub is None:
+        hit = _qualitative_reading(readings)
+        if hit is not None:
+            v = "explained"
+            out["reading"], out["chance"] = hit.family, _chance(hit.chance)
+            note = (
+                f"reading {hit.family} ({hit.description}): the check holds, at chance "
+                f"{format_number(_chance(hit.chance))} (budget {format_number(THRESHOLD)})"
+                + (f"; see report section '{hit.section}'" if hit.section else "")
+                + (f". {note}" if note else "")
+            )
+        elif not note:
+            note = "qualitative check does not hold"
     elif v == "mismatch" and not note:
         note = _unexplained(abs_err, tol)
     elif v == "match":
@@ -224,6 +242,22 @@ def _assess(doc, row, value, note, alternatives=(), overrides=None, related=None
         **out,
     }
     return _Judged(out, explanation, tol, pub, readings)
+
+
+def _qualitative_reading(readings):
+    """The first reading under which a failed qualitative check holds, at a chance (which
+    it must state) within :data:`~abglib.verdicts.readings.THRESHOLD`."""
+    for r in readings:
+        if isinstance(r.value, (bool, np.bool_)) and bool(r.value):
+            c = getattr(r, "chance", None)
+            if c is None:
+                raise AbglibValueError(
+                    f"a reading of a qualitative row must give its chance, got none for "
+                    f"{r.description!r}"
+                )
+            if 0 <= float(c) <= THRESHOLD:
+                return r
+    return None
 
 
 def _chance(c: float) -> float:

@@ -376,9 +376,12 @@ def test_morrison_vrfs_are_prediction_vrfs(s, key, comparison):
     same = np.isclose(printed, np.sum(impulse(g, n, smoothed) ** 2), rtol=1e-9)
     assert bool(same) is holds
     assert value(s, key) is holds
-    assert comparison.loc[key, "verdict"] == ("match" if holds else "mismatch")
+    # v0.4.0: the reading 'predicted instead of smoothed' explains the rows that do not
+    # hold as printed (chance 2 rtol / 0.9 per gain set, the claim's bound)
+    assert comparison.loc[key, "verdict"] == ("match" if holds else "explained")
     if not holds:
         assert "one-step" in comparison.loc[key, "note"]
+        assert comparison.loc[key, "reading"] == "convention:predicted instead of smoothed estimate"
 
 
 @claim_test(DOC, "eq.22_24")

@@ -267,7 +267,26 @@ def _equation(s: SteelmanStudy, key: str) -> Result:
         note += "; printed k_y(0) is read as k_v(0) (OCR)"
     if eq == "20":
         note += "; printed A_x² in eq 20 is read as A_a² (OCR)"
-    return Result(holds, f"{note}; see '{SEC_EQS}'")
+    readings = ()
+    per_set = [set(str(x).split(", ")) - {""} for x in rows["matches"]]
+    common = sorted(set.intersection(*per_set)) if per_set else []
+    if not holds and common:
+        # the chance that an unrelated closed form agrees with the named exact VRF to the
+        # check's relative tolerance r on one gain set: a window of 2 r |v| in the decade
+        # of v (at least 0.9 |v| long), so at most 2 r / 0.9 per candidate output (the
+        # other gain sets, each as unlikely, are not counted: a bound)
+        rtol = float(s.cfg["equation_checks"]["exact_rtol"])
+        readings = (
+            Reading(
+                f"the printed form as the exact {' and '.join(common)} VRF (one-step "
+                f"prediction) on all {len(rows)} gain sets",
+                True,
+                SEC_EQS,
+                family="convention:predicted instead of smoothed estimate",
+                chance=len(common) * 2 * rtol / 0.9,
+            ),
+        )
+    return Result(holds, f"{note}; see '{SEC_EQS}'", readings)
 
 
 # ------------------------------------------------------------------ stability (eqs 42-49)
