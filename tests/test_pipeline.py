@@ -20,6 +20,8 @@ from abglib._perturb import ENV as PERTURB
 from abglib.reporting import precision
 from abglib.reporting.compare import COMPARISON_COLUMNS, SCORECARD_COLUMNS, VERDICTS
 
+from .conftest import require
+
 pytestmark = pytest.mark.pipeline
 
 REPO = Path(__file__).resolve().parents[1]
@@ -224,7 +226,7 @@ def test_built_reports_in_a_browser(two_runs, tmp_path):
     from abglib.reporting.browser import check_folder, find_chromium
 
     if find_chromium() is None:
-        pytest.skip("no Chromium on PATH (apt-get install chromium; .ci/run installs it)")
+        require("no Chromium on PATH (apt-get install chromium; .ci/run installs it)")
     checks = check_folder(two_runs[0] / REPORTS, tmp_path)
     assert len(checks) >= 3
     bad = {c.url: c.problems for c in checks if c.problems}

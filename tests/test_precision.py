@@ -163,7 +163,7 @@ def test_the_generated_table_names_real_columns():
 
     for key, cols in PRECISION.items():
         assert key.count("/") == 1, key
-        for col, spec in cols.items():
+        for spec in cols.values():
             prec.stricter(spec, spec)  # raises on a malformed spec
 
 
