@@ -49,6 +49,11 @@ def to_huang(gains: Gains) -> tuple:
 
     .. math:: \gamma_H = \gamma / 2 .
 
+    References
+    ----------
+    Huang, Yang & Ma, seed 002 (``huang``), eqs 1, 3-4 (gamma_H = gamma / 2);
+    Steelman (1978), seed 000 (``steelman1978``), eq 40.
+
     Examples
     --------
     >>> to_huang(Gains(0.5, 0.2, 0.04))
@@ -76,6 +81,11 @@ def from_huang(alpha_h, beta_h, gamma_h=0.0) -> Gains:
     Notes
     -----
     .. math:: \gamma = 2\gamma_H \quad\text{(seed 002, eq 4 vs seed 000, eq 40)}
+
+    References
+    ----------
+    Huang, Yang & Ma, seed 002 (``huang``), eqs 1, 3-4 (gamma_H = gamma / 2);
+    Steelman (1978), seed 000 (``steelman1978``), eq 40.
 
     Examples
     --------
@@ -105,6 +115,11 @@ def to_filterpy(gains: Gains) -> tuple:
     -----
     .. math:: g = \alpha,\quad h = \beta,\quad k = \gamma / 2
 
+    References
+    ----------
+    FilterPy's ``filterpy.gh.GHKFilter`` (not a seed document);
+    Steelman (1978), seed 000 (``steelman1978``), eqs 1-3.
+
     Examples
     --------
     >>> to_filterpy(Gains(0.5, 0.2, 0.04))
@@ -132,6 +147,11 @@ def from_filterpy(g, h, k=0.0) -> Gains:
     Notes
     -----
     .. math:: \alpha = g,\quad \beta = h,\quad \gamma = 2k
+
+    References
+    ----------
+    FilterPy's ``filterpy.gh.GHKFilter`` (not a seed document;
+    ``k = gamma / 2``); Steelman (1978), seed 000 (``steelman1978``), eqs 1-3.
 
     Examples
     --------

@@ -147,6 +147,11 @@ def standard_ab(theta) -> Gains:
 
     The characteristic polynomial (seed 000, eq 41) is then :math:`(z - \theta)^2`.
 
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), unnumbered gains before eq 31 (critically damped
+    alpha-beta) and eq 41 (characteristic polynomial).
+
     Examples
     --------
     >>> g = standard_ab(0.5)
@@ -181,6 +186,11 @@ def standard_abg(theta) -> Gains:
 
     The characteristic polynomial (seed 000, eq 40) is then :math:`(z - \theta)^3`.
 
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 22-24 (critically damped alpha-beta-gamma)
+    and eq 40 (characteristic polynomial).
+
     Examples
     --------
     >>> g = standard_abg(0.5)
@@ -212,6 +222,11 @@ def standard_theta_from_alpha(alpha, order=2):
     .. math:: \theta = (1 - \alpha)^{1/2}\ \text{(order 2)},\qquad
               \theta = (1 - \alpha)^{1/3}\ \text{(order 3)} .
 
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 22 (order 3) and the unnumbered
+    alpha-beta gains after eq 30 (order 2), inverted.
+
     Examples
     --------
     >>> round(standard_theta_from_alpha(0.3, order=3), 6)
@@ -242,6 +257,11 @@ def standard_from_alpha(alpha, order=2) -> Gains:
     :func:`standard_theta_from_alpha` followed by seed 000, eqs 22-24 (order 3) or the
     alpha-beta pair after eq 30 (order 2). Steelman's Tables 1-2 use this rule for
     alpha = 0.3 and 0.246.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 22-24 (order 3) and the unnumbered
+    alpha-beta gains before eq 31 (order 2).
 
     Examples
     --------
@@ -277,6 +297,10 @@ def qd(m) -> Gains:
 
     Alpha is 1 at ``m = 1`` and ``m = 1.2``, slightly above 1 in between, and decreases
     for ``m > 1.2``.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 28-30 (the QD tracker; McCool, Shepherd).
 
     Examples
     --------
@@ -324,6 +348,10 @@ def qd_m_from_alpha(alpha):
     Its largest real root is returned. Steelman's "the m required to produce
     alpha = .3 is 16.6" is this root, 16.5633, rounded.
 
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 28, solved for ``m``.
+
     Examples
     --------
     >>> round(qd_m_from_alpha(0.3), 4)
@@ -354,6 +382,11 @@ def benedict_bordner(alpha) -> Gains:
     (seed 000, eq 21) with ``gamma = 0``:
 
     .. math:: \beta = \frac{\alpha^2}{2 - \alpha} .
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eqs 23a-23b (method M1; Benedict & Bordner 1962).
+    Steelman (1978), seed 000 (``steelman1978``), eq 21 (Simpson's condition) with gamma = 0.
 
     Examples
     --------
@@ -400,6 +433,10 @@ def simpson_gamma(alpha, beta, *, allow_unstable: bool = False) -> Gains:
     for gamma:
 
     .. math:: \gamma = \frac{4\beta}{\alpha} - 2\alpha - 2\beta .
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 21, solved for gamma; stability: eqs 45-48.
 
     Examples
     --------
@@ -455,6 +492,10 @@ def simpson_beta(alpha, gamma, *, allow_unstable: bool = False) -> Gains:
 
     .. math:: \beta = \frac{\alpha(\alpha + \gamma/2)}{2 - \alpha} .
 
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 21, solved for beta.
+
     Examples
     --------
     >>> round(simpson_beta(0.5, 0.05).beta, 12)
@@ -498,6 +539,10 @@ def simpson(alpha, beta=None, gamma=None, *, allow_unstable: bool = False) -> Ga
     eqs 11-20 but leaves one degree of freedom:
 
     .. math:: 2\beta - \alpha\left(\alpha + \beta + \frac{\gamma}{2}\right) = 0 .
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 21 (Simpson 1963), minimising eqs 11-20.
 
     Examples
     --------
@@ -543,6 +588,11 @@ def growing_memory(n_samples, start=1) -> Gains:
     seed 001, eqs 9-10 (``x = z_2``, ``v = (z_2 - z_1) / T``, whatever beta_1 is), and
     each later smoothed position is the least-squares line through all samples so far.
     Seed 001 states the rule for ``n > 2``.
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eqs 24a-b (method M2) and the two-point start
+    of eqs 9-10.
 
     Examples
     --------
@@ -592,6 +642,11 @@ def huang_type1(xi, order=2) -> Gains:
     steady-state Kalman gains of the white-acceleration-increment model
     (:func:`kalata_abg`).
 
+    References
+    ----------
+    Huang, Yang & Ma, seed 002 (``huang``), type I selection (Fig 2), gains in its eq 3
+    convention; Steelman (1978), seed 000 (``steelman1978``), eq 21 (Simpson's condition).
+
     Examples
     --------
     >>> g = huang_type1(0.61, order=3)
@@ -633,6 +688,11 @@ def huang_type2(xi, order=2) -> Gains:
 
     In the canonical convention this is Steelman's standard tracker with
     ``theta = xi`` (seed 000, eqs 22-24 and after eq 30).
+
+    References
+    ----------
+    Huang, Yang & Ma, seed 002 (``huang``), type II selection (Fig 3);
+    Steelman (1978), seed 000 (``steelman1978``), eqs 22-24: the standard tracker with theta = xi.
 
     Examples
     --------
@@ -692,6 +752,11 @@ def huang_for_enbw(bn_hz, dt, rule="type1", order=2) -> Gains:
     :func:`scipy.optimize.brentq`. Reachable ``B_n T``: type I order 2 and type II
     order 2 up to 2.5 (deadbeat ``alpha = beta = 1``), type II order 3 up to 9.5
     (``xi = 0``), type I order 3 unbounded (``xi -> 1``).
+
+    References
+    ----------
+    Huang, Yang & Ma, seed 002 (``huang``), eq 8 (ENBW), eqs 9-14 and Figs 2-3 (B_n T against
+    xi for the type I and type II selections).
 
     Examples
     --------
@@ -805,6 +870,12 @@ def bendix(period_s, table="memo") -> Gains:
     Seed 003 gives the gains as a table, not a formula (selected by S. Guarino; Bendix
     TN FB-467-012, p. 4).
 
+    References
+    ----------
+    Elwell and Sinsky, FAA Bendix letter report, seed 003 (``faa_bendix``): the memo's table of
+    gains and smoothing ratios for update periods 1-8 s (``table="memo"``) and the 48 plot captions
+    (``table="captions"``).
+
     Examples
     --------
     >>> bendix(3)
@@ -856,6 +927,13 @@ def kalata_ab(tracking_index) -> Gains:
     (:func:`steady_state_kalman` with ``model="piecewise_constant"``); equivalently
     :math:`\Lambda^2 = \beta^2 / (1 - \alpha)`.
 
+    References
+    ----------
+    P. R. Kalata, The tracking index: a generalized parameter for
+    alpha-beta and alpha-beta-gamma target trackers, IEEE Trans. AES-20,
+    1984 (not a seed document; cited by seed 001); the gains drive
+    Steelman (1978), seed 000 (``steelman1978``), eqs 1-3.
+
     Examples
     --------
     >>> g = kalata_ab(1.0)
@@ -904,6 +982,11 @@ def kalata_abg(tracking_index) -> Gains:
     :func:`steady_state_kalman`, order 3), not for the piecewise-constant-jerk model
     :math:`\Gamma = [T^3/6, T^2/2, T]^T`. They also satisfy Simpson's condition
     (seed 000, eq 21) and Huang's type I equations (seed 002).
+
+    References
+    ----------
+    P. R. Kalata, IEEE Trans. AES-20, 1984 (not a seed document); Steelman (1978), seed 000
+    (``steelman1978``), eq 21 (Simpson's condition, which these gains satisfy).
 
     Examples
     --------
@@ -1003,6 +1086,11 @@ def steady_state_kalman(q, r, dt=1.0, order=2, model="piecewise_constant") -> Ga
     :math:`[\alpha, \beta/T, \gamma/T^2]^T`. For ``"piecewise_constant"`` the result
     equals :func:`kalata_ab` / :func:`kalata_abg` with :math:`\Lambda = \sqrt{q}\,T^2 /
     \sqrt{r}`.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 1-6: the corrector (a Kalman update with
+    gain [alpha, beta/T, gamma/T^2]) and the transition.
 
     Examples
     --------

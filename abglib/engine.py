@@ -61,6 +61,10 @@ class TrackResult:
         started from zero acceleration.
 
     An output not requested through ``track(..., outputs=...)`` is ``None``.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 1-6: the smoothed and predicted outputs.
     """
 
     x_pred: np.ndarray | None
@@ -265,6 +269,11 @@ def track(
         x_p = \\bar x_{n-1} + T\\bar v_{n-1} + \\tfrac12 T^2 \\bar a_{n-1},\\quad
         \\bar x_n = x_p + \\alpha r,\\ \\bar v_n = v_p + \\tfrac{\\beta}{T} r,\\
         \\bar a_n = a_p + \\tfrac{\\gamma}{T^2} r,\\quad r = z_n - x_p.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 1-6: the recursion.
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), section 3, eqs 9-10: the two-point start.
 
     Examples
     --------

@@ -55,6 +55,11 @@ class Gains:
     Any finite values are accepted, unstable ones included, so that instability can be
     studied; :func:`abglib.analysis.is_stable` tells whether a set is stable.
 
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 1-3: the gains alpha, beta, gamma of the
+    recursion.
+
     Examples
     --------
     >>> g = Gains(0.5, 0.2)

@@ -65,6 +65,10 @@ class MethodResult:
         What the method chose: M3 the weight ``w`` per series ``(...)``; M4 the ``alpha``
         in use at every sample ``(..., n)``; M5 the index of the chosen tracker of the
         bank at every sample ``(..., n)``; None for M1, M2.
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eq 3 (the predictions) and eqs 9-10 (their start).
     """
 
     x_pred: np.ndarray
@@ -73,7 +77,12 @@ class MethodResult:
 
 # --------------------------------------------------------------------------- helpers
 def beta_eq23b(alpha):
-    r"""``beta = alpha^2 / (2 - alpha)`` (seed 001, eq 23b), for ``0 < alpha <= 1``."""
+    r"""``beta = alpha^2 / (2 - alpha)`` (seed 001, eq 23b), for ``0 < alpha <= 1``.
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eq 23b.
+    """
     return benedict_bordner(alpha).beta
 
 
@@ -128,6 +137,10 @@ def m1(z, alpha0, dt=1.0) -> MethodResult:
     -----
     Seed 001, eqs 23a-b (the Benedict-Bordner relation), run by the recursion of eqs 3, 6,
     8 with the initialisation of eqs 9-10.
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eqs 23a-23b (method M1).
     """
     return MethodResult(_pred(_z(z), benedict_bordner(alpha0), _dt(dt)))
 
@@ -138,6 +151,10 @@ def m2(z, dt=1.0) -> MethodResult:
     ``alpha_n = 2(2n-1)/(n(n+1))``, ``beta_n = 6/(n(n+1))`` with ``n`` the 1-based sample
     number, so the first filtered sample (``n = 3``) gets ``alpha = 5/6``, ``beta = 1/2``:
     each prediction extrapolates the least-squares line through all samples so far.
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eqs 24a-b (method M2).
     """
     z = _z(z)
     return MethodResult(_pred(z, growing_memory(z.shape[-1]), _dt(dt)))
@@ -168,6 +185,10 @@ def m3_gains(n_samples: int, w) -> Gains:
     Seed 001, eq 25 and Algorithm 1. The paper fixes alpha "at alpha_0" (step 1) and
     recommends the growing-memory estimate (24a) for it "to avoid the arbitrary choice of
     alpha"; this reads alpha_0 as alpha^_n and evaluates eq 23b at that alpha.
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eq 25 and Algorithm 1.
     """
     w = np.asarray(check_in_range("w", w, 0.0, 1.0, low_inclusive=True, high_inclusive=True))
     gm = growing_memory(n_samples)
@@ -199,6 +220,10 @@ def m3(z, w_grid, dt=1.0) -> MethodResult:
     series gets the grid weight minimising its mean squared innovation over the filtered
     samples (first grid point on a tie). This uses the whole series, as the paper's
     search does.
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eq 25 and Algorithm 1 (method M3).
     """
     z = _z(z)
     dt = _dt(dt)
@@ -242,6 +267,10 @@ def m4(z, alpha0, window, alpha_grid, dt=1.0) -> MethodResult:
     over the window from the tracker's smoothed state just before it, and adopt the alpha
     whose window innovations (eq 4) have the smallest sum of squares for the next step
     (first grid point on a tie).
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), Algorithm 2 (method M4).
     """
     z = _z(z)
     dt = _dt(dt)
@@ -340,6 +369,10 @@ def m5(z, alphas, dt=1.0, causal=False, memory=1) -> MethodResult:
     -----
     The K trackers run independently in parallel (step 2); the selection never feeds back
     into them.
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), Algorithm 3 (method M5).
     """
     z = _z(z)
     dt = _dt(dt)
@@ -403,6 +436,10 @@ def rmse(x_pred, truth, axis=-1):
     r"""Root mean square prediction error (seed 001, eq 26) along ``axis`` (time).
 
     .. math:: \mathrm{RMSE} = \sqrt{\frac{\sum (x - x_p)^2}{N}} .
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eq 26.
     """
     d = as_float_array("x_pred", x_pred) - as_float_array("truth", truth)
     return np.sqrt(np.mean(d * d, axis=axis))
@@ -412,6 +449,10 @@ def percentage_change(rmse_m1, rmse_mi):
     r"""Percentage change of RMSE relative to M1 (seed 001, eq 27).
 
     .. math:: PC_{i,1} = \frac{RMSE_{M1} - RMSE_{Mi}}{RMSE_{M1}} \cdot 100\% .
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eq 27.
     """
     r1 = check_positive("rmse_m1", rmse_m1)
     return (r1 - as_float_array("rmse_mi", rmse_mi)) / r1 * 100.0

@@ -22,7 +22,13 @@ __all__ = [
 
 
 def rng_from(seed) -> np.random.Generator:
-    """A :class:`numpy.random.Generator` from an int seed (or pass one through)."""
+    """A :class:`numpy.random.Generator` from an int seed (or pass one through).
+
+    References
+    ----------
+    None: a seeded NumPy generator; seeds are recorded in every
+    dataset's manifest.
+    """
     if isinstance(seed, np.random.Generator):
         return seed
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
@@ -37,7 +43,13 @@ def _check_n(n) -> int:
 
 
 def sample_times(n: int, dt: float = 1.0) -> np.ndarray:
-    """Sample instants ``t_k = k * dt``, ``k = 0..n-1``."""
+    """Sample instants ``t_k = k * dt``, ``k = 0..n-1``.
+
+    References
+    ----------
+    None: the sampling instants ``t_k = k T`` of every source
+    (e.g. Steelman (1978), seed 000 (``steelman1978``), eqs 1-6).
+    """
     return np.arange(_check_n(n)) * float(check_positive("dt", dt))
 
 
@@ -46,6 +58,11 @@ def bendix_impulse(n: int = 40, dt: float = 1.0) -> np.ndarray:
 
     "A pulse of amplitude 1/T and width T is applied to the input at the first sampling":
     ``z[0] = 1/T``, zero afterwards (unit area).
+
+    References
+    ----------
+    Elwell and Sinsky, FAA Bendix letter report, seed 003 (``faa_bendix``): the test program's
+    impulse input (a pulse of amplitude 1/T and width T), graphs 1-3 of each gain set.
     """
     T = float(check_positive("dt", dt))
     z = np.zeros(_check_n(n))
@@ -59,6 +76,11 @@ def bendix_ramp(n: int = 40, dt: float = 1.0, rise_samples: int = 10) -> np.ndar
     "An input of zero at the first sampling. The input level is then raised by the value
     of T each sampling for 10 periods. The input is then held at zero for the remaining
     samples": ``z[k] = k T`` for ``k = 0..rise_samples``, then ``0``.
+
+    References
+    ----------
+    Elwell and Sinsky, FAA Bendix letter report, seed 003 (``faa_bendix``): the test program's ramp
+    input (raised by T for 10 periods, then zero), graphs 4-6 of each gain set.
     """
     T = float(check_positive("dt", dt))
     n = _check_n(n)
@@ -75,13 +97,26 @@ def bendix_ramp(n: int = 40, dt: float = 1.0, rise_samples: int = 10) -> np.ndar
 
 
 def polynomial_track(t, x0=0.0, v0=0.0, a0=0.0, jerk=0.0) -> np.ndarray:
-    """Position ``x0 + v0 t + a0 t^2/2 + jerk t^3/6`` at times ``t`` (array (..., n))."""
+    """Position ``x0 + v0 t + a0 t^2/2 + jerk t^3/6`` at times ``t`` (array (..., n)).
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 4-6 (the polynomial motion the tracker
+    models); the velocity, acceleration and jerk inputs of
+    Huang, Yang & Ma, seed 002 (``huang``) (after eq 14).
+    """
     t = np.asarray(t, dtype=float)
     return x0 + v0 * t + 0.5 * a0 * t**2 + jerk * t**3 / 6.0
 
 
 def white_noise(shape, sigma: float, seed) -> np.ndarray:
-    """Gaussian white noise of standard deviation ``sigma`` (seeded)."""
+    """Gaussian white noise of standard deviation ``sigma`` (seeded).
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), the simulations' "Gaussian white noise"
+    (Tables 1 and 3).
+    """
     sigma = float(check_positive("sigma", sigma))
     return rng_from(seed).normal(0.0, sigma, size=shape)
 
@@ -91,6 +126,11 @@ def ar1_noise(shape, sigma: float, rho: float, seed) -> np.ndarray:
 
     ``w[k] = rho w[k-1] + sqrt(1 - rho^2) sigma e[k]``, ``w[0] ~ N(0, sigma^2)``, so every
     sample has standard deviation ``sigma`` and lag-1 correlation ``rho``.
+
+    References
+    ----------
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), the simulations' "Gaussian colored noise"
+    (Tables 2 and 4).
     """
     sigma = float(check_positive("sigma", sigma))
     rho = float(check_in_range("rho", rho, -1.0, 1.0))

@@ -58,6 +58,11 @@ def enbw(gains: Gains, dt=1.0):
     VRF from the discrete Lyapunov equation (:func:`abglib.analysis.vrf`). This is the
     one-sided bandwidth of seed 002, eq 14 (which it equals exactly for alpha-beta).
 
+    References
+    ----------
+    Huang, Yang & Ma, seed 002 (``huang``), eq 8 (definition) and eq 14 (alpha-beta); Steelman
+    (1978), seed 000 (``steelman1978``), eq 39 (the predicted position's transfer function).
+
     Examples
     --------
     >>> round(enbw(Gains(0.5, 0.2), dt=0.1), 6)
@@ -128,6 +133,11 @@ def enbw_numeric(gains: Gains, dt=1.0, method="integral"):
     -----
     .. math:: B_n = \frac{1}{2\pi}\int_0^{\pi/T} |H(e^{j\omega T})|^2\, d\omega
               = \frac{1}{2T}\sum_{k \ge 1} h_k^2 .
+
+    References
+    ----------
+    Huang, Yang & Ma, seed 002 (``huang``), eq 8: the integral of ``|H|^2``, summed;
+    Steelman (1978), seed 000 (``steelman1978``), eq 39.
     """
     methods = ("integral", "impulse")
     if method not in methods:

@@ -184,6 +184,10 @@ def min_gain_at_pi(gains: Gains, output: str = "x_smooth"):
     :math:`\\gamma` -- seed 000, eq 50, is exact (in modulus) and indeed independent of
     :math:`\\gamma`. Whether it is the *minimum* of the response depends on the gains
     (for :math:`\\alpha > 1` it exceeds 1 and is a maximum); the tests check where.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 50.
     """
     _check_output(output, POSITION_OUTPUTS)
     return scalar_or_array(np.abs(frequency_response(gains, output, np.pi)))
@@ -215,6 +219,11 @@ def peak(gains: Gains, output: str = "x_smooth", method: str = "poly"):
     :math:`|H|^2 - 1 = (1-\\alpha) q^2 (2\\beta - q) / |\\Delta|^2`, so the response
     exceeds 1 exactly for :math:`q < 2\\beta` and the peak lies below eq 51's frequency.
     Compare the approximations :func:`omega_max_eq54` and :func:`overshoot_eq55`.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), the overshoot defined before eq 55 (exact);
+    eqs 54-55 are its printed approximations.
     """
     gains = require_gains(gains)
     _check_output(output, POSITION_OUTPUTS)
@@ -245,6 +254,11 @@ def omega_at_gain(gains: Gains, level_db, output: str = "x_smooth", method: str 
         The smallest :math:`\\omega T > \\omega T_{max}` (:func:`peak`) with
         :math:`|H| = 10^{L_{dB}/20}`; ``nan`` where the response does not reach the level
         above the peak (a level above the peak, or below the value at :math:`\\pi`).
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), Figures 1-6 and eqs 51-53 (the
+    printed approximations this solves exactly).
     """
     gains = require_gains(gains)
     _check_output(output, POSITION_OUTPUTS)
@@ -279,6 +293,10 @@ def first_undesired_max(gains: Gains, output: str = "x_smooth", method: str = "p
     :math:`|H(e^{-j\\omega T})| = |H(e^{j\\omega T})|`, so the passband peak recurs at
     :math:`2\\pi - \\omega T_{max}`: seed 000, design example, step 3
     (":math:`\\omega = (2\\pi - .04)/T`" for :math:`\\alpha = .1`).
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), design example, step 3.
     """
     w, _ = peak(gains, output, method)
     return scalar_or_array(2.0 * np.pi - np.asarray(w))
@@ -299,6 +317,10 @@ def min_gain_steelman_eq50(gains: Gains):
         The signed value (it is :math:`\\bar X/X` at :math:`z = -1`, a real number,
         negative when :math:`\\beta > 2\\alpha`); compare its modulus with
         :func:`min_gain_at_pi`.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 50, as printed.
     """
     a, b, _ = require_gains(gains).as_arrays()
     den = 4.0 - 2.0 * a - b
@@ -333,6 +355,10 @@ def omega_unity_eq51(gains: Gains):
     :math:`|\\Delta|^2 - |N|^2 = (1-\\alpha)\\,q^2(q - 2\\beta)`,
     :math:`q = 2(1 - \\cos\\omega T)`; the only nonzero root is :math:`\\cos\\omega T =
     1 - \\beta`. (For :math:`\\alpha = 1`, :math:`\\bar X \\equiv X`.)
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 51, as printed.
     """
     b = _beta(gains, 0.0, 2.0, low_inclusive=True, high_inclusive=True)
     return scalar_or_array(np.arccos(1.0 - b))
@@ -349,6 +375,10 @@ def omega_unity_eq52(gains: Gains):
     Returns
     -------
     float or array (S...)
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 52, as printed.
     """
     return scalar_or_array(np.sqrt(2.0 * _beta(gains, 0.0, low_inclusive=True)))
 
@@ -377,6 +407,10 @@ def omega_3db_eq53(gains: Gains, exponent: float = -0.15):
 
     the line from (:math:`\\sqrt{2\\beta}`, 0 dB) to (:math:`\\pi`,
     :math:`20\\log_{10}(\\alpha/2)` dB, eq 50 for small :math:`\\beta`) on log-log axes.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 53, as printed.
     """
     a, _, _ = require_gains(gains).as_arrays()
     a = check_in_range("alpha", a, 0.0, 2.0)
@@ -398,6 +432,10 @@ def omega_max_eq54(gains: Gains):
     -------
     float or array (S...)
         Half of eq 52's unity-gain frequency.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 54, as printed.
     """
     return scalar_or_array(np.sqrt(_beta(gains, 0.0, low_inclusive=True) / 2.0))
 
@@ -421,6 +459,10 @@ def overshoot_eq55_terms(gains: Gains) -> dict:
     :math:`n = \\alpha\\beta/2 - \\gamma + 3\\beta^2/8`,
     :math:`M = \\tfrac38\\beta^2(1-\\alpha)(n + \\beta/3)`,
     :math:`N^2 = \\beta^3(1-\\alpha)^2 n^2/16`, :math:`D = n^2 + \\beta^3/8`.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 56-59, as printed.
     """
     a, b, g = require_gains(gains).as_arrays()
     n = a * b / 2.0 - g + 3.0 / 8.0 * b**2
@@ -453,6 +495,10 @@ def overshoot_eq55(gains: Gains):
     Steelman's approximation of ``max |Xbar/X| - 1`` at :math:`\\omega T_{max}`, with
     ``M, N^2, D, n`` from eqs 56-59 (:func:`overshoot_eq55_terms`). Compare the exact
     :func:`peak`.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 55-59, as printed.
     """
     t = overshoot_eq55_terms(gains)
     M, N2, D = (np.asarray(t[k]) for k in ("M", "N2", "D"))

@@ -50,6 +50,10 @@ def characteristic_polynomial(gains: Gains):
     :math:`z^3 + (\\alpha + \\beta + \\gamma/2 - 3) z^2 + (3 - 2\\alpha - \\beta + \\gamma/2) z
     - (1 - \\alpha)`; eq 41 (:math:`\\gamma = 0`):
     :math:`z^2 + (\\alpha + \\beta - 2) z + (1 - \\alpha)`.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 40 (eq 41 for gamma = 0).
     """
     a, b, g = require_gains(gains).as_arrays()
     cubic = np.stack(
@@ -79,6 +83,10 @@ def poles(gains: Gains):
     -----
     Computed as the eigenvalues of the companion matrix of
     :func:`characteristic_polynomial` (vectorised over the bank).
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 40 (eq 41 where gamma = 0).
     """
     coeffs = characteristic_polynomial(gains)
     g = np.asarray(gains.as_arrays()[2])
@@ -113,6 +121,10 @@ def pole_radius(gains: Gains):
     -------
     float or array (S...)
         ``max_k |z_k|`` over the poles of :func:`poles` (eq 41's two where ``gamma == 0``).
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eq 40 (eq 41 for gamma = 0): the roots.
     """
     return scalar_or_array(np.nanmax(np.abs(poles(gains)), axis=-1))
 
@@ -163,6 +175,10 @@ def is_stable(gains: Gains):
     uncontrollable from the measurements and never excited) is excluded. Boundary gains
     (a pole exactly on the circle) are unstable. The tests check this against the
     modulus of the numeric poles and against the state-space matrix ``F``.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 40-41 (poles) and eqs 41-49 (Jury).
     """
     return scalar_or_array(_jury(require_gains(gains)))
 
@@ -173,6 +189,10 @@ def require_stable(gains: Gains, what: str = "steady-state response is undefined
     ``what`` completes the message "the <what>: gains (...) are unstable", e.g.
     ``"steady-state variance is unbounded"``; the first unstable set of a bank is named
     with its index and its largest pole radius.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 40-41 (poles), as :func:`is_stable`.
     """
     ok = np.asarray(_jury(require_gains(gains)))
     if ok.all():
@@ -209,6 +229,10 @@ def stable_jury_steelman(gains: Gains):
     :math:`\\alpha\\beta + \\alpha\\gamma/2 - \\gamma < 2\\alpha(2 - \\alpha)`, which the
     paper omits; it is implied by eqs 45, 46 and 48, so the printed set is necessary and
     sufficient, as the paper says (the tests confirm it against the poles).
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 42-48, as printed.
     """
     a, b, g = require_gains(gains).as_arrays()
     ab = (a > 0) & (b > 0) & (2 * a + b < 4)
@@ -233,6 +257,10 @@ def stable_sufficient_eq49(gains: Gains):
     :math:`0 < \\alpha < 2`, :math:`2\\alpha + \\beta < 4`, :math:`\\gamma > 0` and
     :math:`\\alpha\\beta > \\gamma` (seed 000, eq 49, "sufficient but not necessary").
     As printed, eq 48 (:math:`\\gamma > 0`) makes it False for every alpha-beta tracker.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 45, 46, 48 and 49, as printed.
     """
     a, b, g = require_gains(gains).as_arrays()
     return scalar_or_array((0 < a) & (a < 2) & (2 * a + b < 4) & (a * b > g) & (g > 0))

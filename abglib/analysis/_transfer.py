@@ -197,6 +197,11 @@ def frequency_response(gains: Gains, output: str, wT, dt: float = 1.0):
     eqs 36-40. The rational function is evaluated in its :math:`w = z - 1` form; where
     :math:`\\gamma = 0` the common factor :math:`w` is cancelled first (eq 41), so that
     :math:`\\omega T = 0` gives the DC gain, not 0/0.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 36-40 with z = exp(j wT)
+    ("Frequency response curves"); eq 41.
     """
     gains = require_gains(gains)
     output = _check_output(output)

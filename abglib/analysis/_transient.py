@@ -72,6 +72,10 @@ def transient_d2_simpson(gains: Gains, dt=1.0) -> dict:
     ``D_x^2 = (2-\alpha)(1-\alpha)^2 / (\alpha\beta(4-2\alpha-\beta))``,
     ``D_v^2 T^2 = [\alpha^2(2-\alpha) + 2\beta(1-\alpha)] / (\alpha\beta(4-2\alpha-\beta))``,
     ``D_a^2 = 0`` -- which equal the exact alpha-beta sums.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 15-17, as printed.
     """
     a, b, g, T = _broadcast(gains, dt)
     require_stable(Gains(a, b, g), _UNSTABLE)
@@ -127,6 +131,10 @@ def transient_a2_simpson(gains: Gains, dt=1.0) -> dict:
     ``inf``, except where the numerator vanishes too -- ``A_x^2 = 0`` at ``alpha = 1``
     (the smoothed position is the measurement) and ``A_v^2 = (2-\alpha)(4-2\alpha-\beta)
     / (16\alpha\beta T^2)`` at ``beta = 2 alpha`` (no steady velocity error).
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 18-20, as printed.
     """
     a, b, g, T = _broadcast(gains, dt)
     require_stable(Gains(a, b, g), _UNSTABLE)
@@ -241,6 +249,10 @@ def transient_d2(gains: Gains, dt=1.0, n_max=2_000_000, rtol=1e-12) -> dict:
     which is the reading under which Simpson's eqs 15-17 (seed 000,
     :func:`transient_d2_simpson`) hold exactly. For a velocity step ``V`` (units/s)
     multiply every entry by ``(V T)^2``.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 15-17 (the measure), summed exactly.
     """
     return _summed(gains, dt, n_max, rtol, "velocity")
 
@@ -277,6 +289,10 @@ def transient_a2(gains: Gains, dt=1.0, n_max=2_000_000, rtol=1e-12) -> dict:
     seed 000, eqs 36-39; per-sample units) ``(1-\alpha)/\beta`` (smoothed position),
     ``\alpha/\beta - 1/2`` (velocity), ``1`` (acceleration, never estimated) and
     ``1/\beta`` (predicted position): those sums are ``inf``; the others are summed.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 18-20 (the measure) and eqs 36-39.
     """
     return _summed(gains, dt, n_max, rtol, "acceleration")
 
@@ -327,6 +343,12 @@ def steady_state_lag(gains: Gains, dt=1.0, kind="acceleration", magnitude=1.0, o
     (``gamma_H = gamma / 2``) the jerk lag is ``J T^3 / (2 gamma_H)``, half of seed 002's
     printed ``B / (gamma F_r^3)``
     (:func:`abglib.replications.huang.printed.steady_state_lag_huang`).
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 36, 39-41 (final-value theorem);
+    Huang, Yang & Ma, seed 002 (``huang``), the steady-state errors A/(beta F_r^2)
+    and B/(gamma F_r^3) after eq 14.
     """
     if kind not in _KINDS:
         raise AbglibValueError(f"kind must be one of {', '.join(map(repr, _KINDS))}, got {kind!r}")

@@ -111,6 +111,11 @@ def vrf(gains: Gains, dt=1.0) -> dict:
     :func:`vrf_simpson`) are the smoothed entries; Morrison's (eqs 25-27, 31-32) the
     predicted ones.
 
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 1-6 (the recursion) and eqs 11-14, 25-27,
+    31-32 (the closed forms it is checked against).
+
     Examples
     --------
     >>> r = vrf(Gains(0.5, 0.2))
@@ -154,6 +159,11 @@ def vrf_benedict_ab(gains: Gains, dt=1.0) -> dict:
 
     and ``v_pred = v_smooth`` (the alpha-beta predictor does not change the velocity).
     All four equal the exact Lyapunov values of :func:`vrf`.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), ref. [7] (Benedict & Bordner 1962);
+    Al-Wagih & Abdulla, seed 001 (``alwagih``), eq 23b (their gain relation).
     """
     a, b, g, T = _broadcast(gains, dt)
     if np.any(g != 0.0):
@@ -202,6 +212,10 @@ def vrf_simpson(gains: Gains, dt=1.0) -> dict:
     :func:`vrf`). At ``gamma = 0`` every term carries the factor ``gamma`` (0/0); there
     the standard alpha-beta results (:func:`vrf_benedict_ab`, the ``gamma -> 0`` limit)
     are returned, with ``a = 0``.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 11-14, as printed.
     """
     a, b, g, T = _broadcast(gains, dt)
     require_stable(Gains(a, b, g), "steady-state variance is unbounded")
@@ -263,6 +277,10 @@ def vrf_standard_abg(theta, dt=1.0) -> dict:
 
     They are exactly the one-step *prediction* VRFs (``x_pred``, ``v_pred``, ``a_pred``
     of :func:`vrf`), not the smoothed ones that Simpson's eqs 11-14 give.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 25-27, as printed (Morrison).
     """
     th, T = _theta_dt(theta, dt)
     p5 = (1.0 + th) ** 5
@@ -298,6 +316,10 @@ def vrf_standard_ab(theta, dt=1.0) -> dict:
 
     They are exactly the one-step *prediction* VRFs (``x_pred``, ``v_pred`` of
     :func:`vrf`; for alpha-beta ``v_pred = v_smooth``).
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 31-32, as printed (Morrison).
     """
     th, T = _theta_dt(theta, dt)
     p3 = (1.0 + th) ** 3
