@@ -172,6 +172,8 @@ def test_judge_names_the_reading_the_chance_and_the_families_tried():
     assert miss["verdict"] == "mismatch" and miss["reading"] == "" and miss["chance"] is None
     assert "reading families tried" in miss["note"]
     assert judge("d", _pub("k", "0.500"), 0.5001, "")["reading"] == ""
+    unbounded = judge("d", _pub("k", "10"), float("inf"), "printed gains unstable")
+    assert unbounded["verdict"] == "mismatch" and "not finite" in unbounded["note"]
 
 
 def test_judge_qualitative_and_missing_rows_are_unchanged():

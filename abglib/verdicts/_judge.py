@@ -207,6 +207,10 @@ def _assess(doc, row, value, note, alternatives=(), overrides=None, related=None
             note = _explained_note(best, explanation) + (f". {note}" if note else "")
         else:
             note = (note or _unexplained(abs_err, tol)) + _tried_note(explanation)
+    elif v == "mismatch" and pub is not None:  # an unbounded value: no reading scales it
+        note = (note or _unexplained(abs_err, tol)) + (
+            "; reading families tried: none applies to a value that is not finite"
+        )
     elif v == "mismatch" and pub is None:
         hit = _qualitative_reading(readings)
         if hit is not None:
