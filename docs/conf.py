@@ -37,20 +37,16 @@ extensions = [
     "sphinx.ext.autosummary",
     "numpydoc",
     "sphinx_gallery.gen_gallery",
-    "myst_parser",
     "abglib_mathml",
 ]
 
-source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
 templates_path = ["_templates"]
-exclude_patterns = [
-    "_build",
-    "README.md",  # how to build this site (read on GitHub, not a page of it)
-    "readme_findings.md",  # the README's findings block, read by `abglib findings`
-    "**/GALLERY_HEADER.rst",
-    "examples/*.py",
-]
+# The topic pages (docs/*.md: architecture, performance, releases, ...) and the findings
+# notes stay Markdown files read in the repository: the site is the API reference, the
+# gallery and the release's reports. (Sphinx reads only .rst: a new .md page cannot break
+# the -W build, and docs/readme_findings.md stays what `abglib findings` reads.)
+exclude_patterns = ["_build", "**/GALLERY_HEADER.rst", "examples/*.py"]
 
 # -- API reference: autosummary pages, numpydoc docstrings ------------------------------
 autosummary_generate = True
@@ -105,6 +101,8 @@ sphinx_gallery_conf = {
     "reset_modules": ("matplotlib",),
     "within_subsection_order": "FileNameSortKey",
     "min_reported_time": 1e9,
+    # the computation-times page loads jQuery and DataTables from a CDN: not written
+    "write_computation_times": False,
 }
 
 # -- HTML --------------------------------------------------------------------------------
@@ -118,8 +116,12 @@ html_theme_options = {
     "page_width": "1180px",
     "sidebar_width": "230px",
     "show_powered_by": False,
-    "extra_nav_links": {f"Reports v{release}": f"{REPORTS.as_posix()}/index.html"},
 }
+# the sidebar links the copied reports from every page (pathto: relative to the page)
+html_sidebars = {
+    "**": ["about.html", "navigation.html", "reports.html", "relations.html", "searchfield.html"]
+}
+html_context = {"reports_index": f"{REPORTS.as_posix()}/index.html"}
 html_show_sourcelink = False
 html_copy_source = False
 
