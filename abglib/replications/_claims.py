@@ -455,16 +455,19 @@ def evaluate(
     design = robustness.settings(study.config)
     joint = robustness.joint_design(ranges, [c.inputs(k) for k, c in resolved.items()], design)
     seeded = robustness.seed_sets(study.config, doc, design)
+    oat_sets, joint_sets = robustness.point_seed_sets(ranges, joint, len(seeded))
     studies: dict[tuple, Any] = {}
 
-    def at(values: Mapping[str, Any]):
-        # one study per point off the nominal one, shared by every row and design
+    def at(values: Mapping[str, Any], k: int):
+        # one study per point off the nominal one (with its seed set k), shared by every
+        # row and design
         key = tuple(sorted((n, _hashable(v)) for n, v in values.items()))
         if not key:
             return study
-        if key not in studies:
-            studies[key] = make_study(robustness.with_values(study.config, values))
-        return studies[key]
+        if (key, k) not in studies:
+            base = seeded[k - 1] if k else study.config
+            studies[key, k] = make_study(robustness.with_values(base, values))
+        return studies[key, k]
 
     seed_studies: dict[int, Any] = {}
 
@@ -490,13 +493,14 @@ def evaluate(
         row["robust"] = vague
         nominal_verdict = row["verdict"]
 
-        def point(design_name, inp, value, nominal, rep, v, key=pub.key):
+        def point(design_name, inp, value, k, nominal, rep, v, key=pub.key):
             points.append(
                 {
                     "key": key,
                     "design": design_name,
                     "input": inp,
                     "value": value,
+                    "seed_set": k,
                     "nominal": nominal,
                     "reproduced": rep,
                     "verdict": v,
@@ -510,25 +514,26 @@ def evaluate(
             by_value = []
             for value in rng.values:
                 if _same(value, rng.nominal):
-                    v, rep = nominal_verdict, row["reproduced"]
+                    k, v, rep = 0, nominal_verdict, row["reproduced"]
                 else:
-                    _, v, rep = judged_at(at({name: value}), pub, claim)
+                    k = oat_sets[name, _hashable(value)]
+                    _, v, rep = judged_at(at({name: value}, k), pub, claim)
                 by_value.append((value, v))
-                point("one_at_a_time", name, _fmt(value), _same(value, rng.nominal), rep, v)
+                point("one_at_a_time", name, _fmt(value), k, _same(value, rng.nominal), rep, v)
             if len({v for _, v in by_value}) > 1:
                 flips.append(_describe_flip(rng, by_value))
         # jointly: the document's design, projected onto the row's inputs
         by_point, seen = [], set()
-        for p in joint:
+        for p, k in zip(joint, joint_sets, strict=True):
             proj = robustness.project(p, inputs)
             key = tuple((n, _hashable(v)) for n, v in proj)
             if len(proj) < 2 or key in seen:
                 continue
             seen.add(key)
-            _, v, rep = judged_at(at(p.values), pub, claim)
+            _, v, rep = judged_at(at(p.values, k), pub, claim)
             by_point.append((proj, v))
             names = ";".join(n for n, _ in proj)
-            point("joint", names, ";".join(_fmt(x) for _, x in proj), False, rep, v)
+            point("joint", names, ";".join(_fmt(x) for _, x in proj), k, False, rep, v)
         # seed sets: a row whose result moves under set 1 rests on a Monte Carlo result
         by_set = []
         if seeded:
@@ -537,15 +542,16 @@ def evaluate(
                 by_set = [(nominal_verdict, row["reproduced"]), (v1, rep1)]
                 by_set += [judged_at(under(k), pub, claim)[1:] for k in range(2, len(seeded) + 1)]
                 for k, (v, rep) in enumerate(by_set):
-                    point("seed_set", "seeds", str(k), k == 0, rep, v)
+                    point("seed_set", "seeds", str(k), k, k == 0, rep, v)
                 row["depends_on"] = ";".join(x for x in (row["depends_on"], "seeds") if x)
         if inputs or by_set:
             parts = []
             causes = []
+            drawn = ", each point under its own seed set" if seeded else ""
             if flips:
-                parts.append(f"one at a time (others nominal): {'; '.join(flips)}")
+                parts.append(f"one at a time (others nominal{drawn}): {'; '.join(flips)}")
             if any(v != nominal_verdict for _, v in by_point):
-                parts.append(robustness.describe_joint(by_point))
+                parts.append(robustness.describe_joint(by_point, drawn=drawn))
             if parts:
                 causes.append("inputs the document does not give")
             if len({v for v, _ in by_set}) > 1:

@@ -19,7 +19,7 @@ verdict holds.
       combination of the ends of its ranges (:func:`ends`: low and high of a numeric
       range, every value of a categorical one, so ``2**k`` corners when the categorical
       ranges have two values). The corners of all such rows are packed into few points
-      by a first-fit covering (:func:`corner_design`); an input no packed corner needs
+      by a greedy covering (:func:`corner_design`); an input no packed corner needs
       stays nominal;
     * *space-filling*: when some row has ``k > corner_inputs`` inputs, ``joint_points``
       points of a Latin hypercube (:class:`scipy.stats.qmc.LatinHypercube`, seeded with
@@ -29,11 +29,16 @@ verdict holds.
       and each input's ``m`` values are visited in equal shares (a Latin hypercube is
       stratified in every coordinate).
 
-    A design point moves several inputs at once; a row is judged at the point's
+    A joint point moves several inputs at once; a row is judged at the point's
     *projection* onto its own inputs (:func:`project`), since ``depends_on`` declares
     that no other input changes its value (a row whose verdict changed with an
     undeclared input would show the change as a flip at that point). A projection that
     moves at most one input is a point of the one-at-a-time sweep and is not repeated.
+Every point off the nominal inputs, one at a time or joint, is drawn with one of the seed
+sets below in turn (:func:`point_seed_sets`), so that a Monte Carlo row meets a fresh
+draw at each of them: a verdict that holds only for the configured draw away from the
+nominal inputs is found as well.
+
 ``seed_set``
     the document's config with every random seed it reads moved together
     (:func:`seed_sets`): keys named ``seed`` or ending in ``_seed`` (integers) in the
@@ -83,6 +88,7 @@ __all__ = [
     "ends",
     "joint_design",
     "latin_hypercube",
+    "point_seed_sets",
     "project",
     "rests_on_chance",
     "seed_paths",
@@ -95,9 +101,19 @@ __all__ = [
 #: Columns of ``results/<doc>/robustness.csv``: one row per judged point. ``design`` is
 #: one of :data:`DESIGNS`. ``input``/``value``: the input and its value (one at a time);
 #: the moved inputs and their values, ``;``-separated and aligned (joint); ``seeds`` and
-#: the set ``k`` (seed set; ``k = 0`` the configured seeds). ``nominal`` is true at the
-#: configured point.
-ROBUSTNESS_COLUMNS = ["key", "design", "input", "value", "nominal", "reproduced", "verdict"]
+#: the set ``k`` (seed set; ``k = 0`` the configured seeds). ``seed_set`` is the seed set
+#: the point was drawn with (:func:`point_seed_sets`; 0: the configured seeds). ``nominal``
+#: is true at the configured point.
+ROBUSTNESS_COLUMNS = [
+    "key",
+    "design",
+    "input",
+    "value",
+    "seed_set",
+    "nominal",
+    "reproduced",
+    "verdict",
+]
 
 #: The designs of a robustness row, in the order they are judged.
 DESIGNS = ("one_at_a_time", "joint", "seed_set")
@@ -131,6 +147,10 @@ _LIMITS = {
 
 # the sections whose seeds a seed set moves (besides the document's own)
 _SEED_SECTIONS = ("datasets",)
+
+#: Above this many combinations of the ends of the inputs, corners are packed first-fit
+#: (:func:`corner_design`) instead of by the greedy search over every combination.
+_MAX_CANDIDATES = 1 << 16
 
 
 class Axis(Protocol):
@@ -394,7 +414,8 @@ def _same(a, b) -> bool:
 
 
 def _key(v):
-    return repr(v) if isinstance(v, (list, dict, tuple)) else v
+    # a value as a dictionary key (a list-valued input, e.g. a diagonal, by its repr)
+    return repr(v) if isinstance(v, (list, dict)) else v
 
 
 def corner_design(
@@ -404,10 +425,12 @@ def corner_design(
     inputs.
 
     A corner of an input set assigns one of its :func:`ends` to each input. The corners
-    are packed first-fit: sets taken largest first, then in order of appearance, their
-    corners in lexicographic order of the ends; each point starts from the first corner
-    not yet held and takes every later one that agrees with it on the inputs they share.
-    An input a point's corners do not assign stays nominal (it is left out of the point).
+    of all sets are packed greedily: the candidates are the combinations of the ends of
+    every input involved (in lexicographic order of the ends); each point is the first
+    candidate that holds the most corners not yet held, with the inputs none of those
+    corners needs set back to nominal. (Beyond :data:`_MAX_CANDIDATES` combinations the
+    packing is first-fit: each point starts from the first corner not yet held and takes
+    every later one that agrees with it on the inputs they share.)
 
     Returns
     -------
@@ -419,21 +442,43 @@ def corner_design(
         s = tuple(dict.fromkeys(s))
         if 2 <= len(s) <= max_inputs and s not in sets:
             sets.append(s)
-    sets.sort(key=len, reverse=True)  # stable: ties keep their order of appearance
-    corners = []
-    for s in sets:
-        for combo in np.ndindex(*(len(ends(axes[n])) for n in s)):
-            corners.append(tuple((n, ends(axes[n])[i]) for n, i in zip(s, combo, strict=True)))
-    points: list[dict[str, Any]] = []
-    left = list(corners)
-    while left:
-        point = dict(left[0])
-        for corner in left[1:]:
-            if all(n not in point or _same(point[n], v) for n, v in corner):
-                point.update(corner)
-        points.append(point)
-        left = [c for c in left if not all(n in point and _same(point[n], v) for n, v in c)]
-    return [{n: v for n, v in p.items() if not _same(v, axes[n].nominal)} for p in points]
+    names = list(dict.fromkeys(n for s in sets for n in s))
+    levels = [ends(axes[n]) for n in names]
+    col = {n: i for i, n in enumerate(names)}
+    corners = [
+        tuple((n, i) for n, i in zip(s, combo, strict=True))
+        for s in sets
+        for combo in np.ndindex(*(len(levels[col[n]]) for n in s))
+    ]
+    size = math.prod(len(lv) for lv in levels)
+    chosen: list[dict[str, int]] = []
+    if corners and size <= _MAX_CANDIDATES:
+        cand = np.array(list(np.ndindex(*(len(lv) for lv in levels))))
+        holds = np.ones((len(corners), size), dtype=bool)
+        for i, corner in enumerate(corners):
+            for n, lvl in corner:
+                holds[i] &= cand[:, col[n]] == lvl
+        left = np.ones(len(corners), dtype=bool)
+        while left.any():
+            j = int(np.argmax(holds[left].sum(axis=0)))
+            new = np.flatnonzero(left & holds[:, j])
+            needed = {n for i in new for n, _ in corners[i]}
+            chosen.append({n: int(cand[j, col[n]]) for n in names if n in needed})
+            left &= ~holds[:, j]
+    else:
+        remaining = list(corners)
+        while remaining:
+            point = dict(remaining[0])
+            for corner in remaining[1:]:
+                if all(point.get(n, lvl) == lvl for n, lvl in corner):
+                    point.update(corner)
+            chosen.append(point)
+            remaining = [c for c in remaining if any(point.get(n) != lvl for n, lvl in c)]
+    out = []
+    for point in chosen:
+        values = {n: levels[col[n]][lvl] for n, lvl in point.items()}
+        out.append({n: v for n, v in values.items() if not _same(v, axes[n].nominal)})
+    return out
 
 
 def latin_hypercube(
@@ -498,6 +543,40 @@ def joint_design(
     return out
 
 
+def point_seed_sets(
+    axes: Mapping[str, Axis], joint: Sequence[JointPoint], n_sets: int
+) -> tuple[dict[tuple[str, Any], int], list[int]]:
+    """The seed set each point of the one-at-a-time and joint designs is drawn with.
+
+    The points off the nominal inputs, in a fixed order (every input of ``axes`` in its
+    declared order, each of its values but the nominal one in grid order, then the joint
+    points in order), take the seed sets ``1 .. n_sets`` in turn: the i-th point set
+    ``1 + i mod n_sets``. A Monte Carlo row is so judged under a fresh draw at every
+    design point, not only at its nominal inputs: chance and inputs together. With no
+    seed set (``n_sets = 0``: the document reads no seed) every point keeps the
+    configured seeds (0).
+
+    Returns
+    -------
+    (one_at_a_time, joint)
+        ``{(input, value): k}`` (values as hashable keys: lists by their ``repr``) and the
+        seed set of each joint point.
+    """
+    i = 0
+    oat: dict[tuple[str, Any], int] = {}
+    for name, ax in axes.items():
+        for v in ax.values:
+            if _same(v, ax.nominal):
+                continue
+            oat[name, _key(v)] = 1 + i % n_sets if n_sets else 0
+            i += 1
+    out = []
+    for _ in joint:
+        out.append(1 + i % n_sets if n_sets else 0)
+        i += 1
+    return oat, out
+
+
 def project(point: JointPoint, inputs: Sequence[str]) -> tuple[tuple[str, Any], ...]:
     """The inputs of a row that ``point`` moves, with their values, in the row's order."""
     return tuple((n, point.values[n]) for n in inputs if n in point.values)
@@ -518,10 +597,13 @@ def describe_point(projection: Sequence[tuple[str, Any]]) -> str:
     return ", ".join(f"{_short(n)}={_fmt(v)}" for n, v in projection)
 
 
-def describe_joint(judged: Sequence[tuple[Sequence[tuple[str, Any]], str]], limit: int = 6) -> str:
+def describe_joint(
+    judged: Sequence[tuple[Sequence[tuple[str, Any]], str]], limit: int = 6, drawn: str = ""
+) -> str:
     """Where each verdict holds over the joint points of one row: ``judged`` lists
     ``(projection, verdict)``. The verdicts held at fewer points are listed point by
-    point (at most ``limit`` each, then a count); the most common one by its count."""
+    point (at most ``limit`` each, then a count); the most common one by its count.
+    ``drawn`` is added to the design's description (e.g. how the points were drawn)."""
     by: dict[str, list] = {}
     for proj, v in judged:
         by.setdefault(v, []).append(proj)
@@ -535,7 +617,9 @@ def describe_joint(judged: Sequence[tuple[Sequence[tuple[str, Any]], str]], limi
         listed = "; ".join(describe_point(p) for p in pts[:limit])
         more = f"; and {len(pts) - limit} more (robustness.csv)" if len(pts) > limit else ""
         parts.append(f"{v} at {len(pts)}: {listed}{more}")
-    return f"jointly ({len(judged)} points moving 2 or more inputs at once): " + ", ".join(parts)
+    return f"jointly ({len(judged)} points moving 2 or more inputs at once{drawn}): " + ", ".join(
+        parts
+    )
 
 
 def describe_seed_sets(verdicts: Sequence[str], design: Design) -> str:

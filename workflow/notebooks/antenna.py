@@ -341,18 +341,29 @@ display(comparison)
 #
 # Every reconstructed input a claim depends on has a plausible range (config
 # `antenna.plausible`, with its basis in the text). Each claim is re-judged one input at a
-# time over that range, the others at their nominal values (`robustness.csv`). The first
-# table lists the rows whose verdict flips; the second the inputs and their ranges.
+# time over that range, the others at their nominal values, and jointly: at every corner of
+# the ranges of a row with at most four inputs, over a Latin hypercube for a row with more
+# (`robustness.csv`, column `design`). The first table lists the rows whose verdict flips;
+# the second the inputs and the values tried one at a time.
 
 # %%
 fragile = comparison[comparison["robust"] == "false"][["item", "quantity", "depends_on", "note"]]
 display(fragile)
-flips = (sweeps.groupby(["key", "input"])["verdict"].nunique() > 1).groupby("input").sum()
+oat = sweeps[sweeps["design"] == "one_at_a_time"]
+flips = (oat.groupby(["key", "input"])["verdict"].nunique() > 1).groupby("input").sum()
+joint = sweeps[sweeps["design"] == "joint"]
+joint_flips = int(
+    (joint.merge(oat[oat["nominal"].astype(str) == "True"][["key", "verdict"]], on="key",
+                 suffixes=("", "_nominal"))
+     .query("verdict != verdict_nominal")["key"].nunique())
+)
 display(Markdown(
     f"{len(fragile)} rows flip; by input (rows flipping on it): "
-    + ", ".join(f"`{k}` {int(v)}" for k, v in flips.items()) + "."
+    + ", ".join(f"`{k}` {int(v)}" for k, v in flips.items())
+    + f"; {joint_flips} rows flip at a point of the joint design ({joint['value'].nunique()} "
+    "combinations)."
 ))
-display(sweeps.groupby("input")["value"].unique().rename("values tried").to_frame())
+display(oat.groupby("input")["value"].unique().rename("values tried").to_frame())
 
 # %% [markdown]
 # ## Provenance

@@ -118,8 +118,8 @@ def pair(rule):
 # **Verdicts that hinge on assumed inputs.** The paper gives no range gate, does not say how
 # its loops start, gives no noise level and judges convergence by eye. Each such input has a
 # plausible range in `config.yaml` (`huang.plausible`, with its basis in the text); every
-# row that depends on one is re-judged over that range, one input at a time. A verdict that
-# flips is reported as `not_reproducible` (`robust = false`), with the ranges where each
+# row that depends on one is re-judged over that range, one input at a time and jointly. A
+# verdict that flips is reported as `not_reproducible` (`robust = false`), with the ranges where each
 # verdict holds (section 11).
 #
 # The summary below is built from the computed tables.
@@ -474,7 +474,10 @@ display(comparison)
 #
 # Each row below depends on an input the paper does not give (`depends_on`); it was
 # re-judged at every point of that input's plausible range (`config.yaml`,
-# `huang.plausible`, one input at a time). `robust = false` marks a flip: the row is then
+# `huang.plausible`, one input at a time), jointly (every corner of the ranges of a row
+# with at most four inputs, a Latin hypercube for a row with more) and, when its result
+# moves with the random seeds (`depends_on` ends in `seeds`), under 5 seed sets besides the
+# configured one (`robustness.csv`, column `design`). `robust = false` marks a flip: the row is then
 # `not_reproducible`, and its note gives where each verdict holds. The full sweep
 # (`robustness.csv`) follows.
 
