@@ -162,6 +162,24 @@ def test_random_published_values_are_explained_at_most_at_the_declared_rate(digi
     assert rate <= THRESHOLD + 3 * math.sqrt(THRESHOLD * (1 - THRESHOLD) / n), rate
 
 
+def test_a_claim_family_explains_random_values_at_most_at_its_budget():
+    """With per-row values supplied (the aggregation family, its own budget THRESHOLD),
+    random printed values are explained at most at 2 x THRESHOLD: the generic catalogue's
+    share plus the one claim family's."""
+    rng = np.random.default_rng(77)
+    explained = n = 0
+    for _ in range(1500):
+        values = rng.uniform(1.0, 9.0, size=5)
+        printed = f"{rng.uniform(1.0, 9.99):.2f}"
+        row = _row(printed, float(np.median(values)), values=values)
+        if abs(row.reproduced - float(printed)) <= row.tolerance:
+            continue
+        n += 1
+        explained += explain(row).best is not None
+    bound = 2 * THRESHOLD
+    assert explained / n <= bound + 3 * math.sqrt(bound * (1 - bound) / n), explained / n
+
+
 # ----------------------------------------------------------------------- judge
 def test_judge_names_the_reading_the_chance_and_the_families_tried():
     row = judge("d", _pub("k", "0.13338"), 0.1333861, "")
