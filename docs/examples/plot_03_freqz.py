@@ -7,8 +7,8 @@ Frequency response against scipy.signal.freqz
 :func:`abglib.analysis.frequency_response` evaluates it on the unit circle. Here the same
 polynomials go through :func:`scipy.signal.freqz`, an independent evaluation, for an
 alpha-beta-gamma tracker: the two curves lie on top of each other (the difference is
-printed), and the smoothed position shows the overshoot near ``wT = 0.3`` that Steelman's
-Figures 1-6 plot.
+printed), and the smoothed position shows the passband overshoot that Steelman's Figures 1-6
+plot (:func:`abglib.analysis.peak` finds it exactly; the grey line).
 """
 
 import matplotlib.pyplot as plt
