@@ -2,10 +2,11 @@
 Compare the design rules
 ========================
 
-Four ways to choose ``beta`` for a given ``alpha`` (alpha-beta trackers): the critically
-damped "standard" gains (seed 000, eqs 31-32), Benedict-Bordner's relation
-beta = alpha^2 / (2 - alpha) (seed 001, eq 23b), Kalata's steady-state Kalman gains
-(parametrised by the tracking index) and Al-Wagih & Abdulla's M1 (seed 001, eq 24).
+Four ways to choose the other gains for a given ``alpha``: the critically damped
+"standard" alpha-beta gains (seed 000, before eq 31), Benedict-Bordner's relation
+beta = alpha^2 / (2 - alpha) (seed 001, eq 23b; method M1), Kalata's steady-state Kalman
+gains (parametrised by the tracking index) and the QD tracker of seed 000, eqs 28-30 (an
+alpha-beta-gamma tracker: its gamma is not drawn).
 Each rule is one point per alpha on the noise-versus-transient trade-off: the variance
 reduction factor of the smoothed position against the summed squared error of its
 response to a unit ramp (seed 000, eq 15: ``transient_d2``), both exact.
@@ -20,7 +21,7 @@ alphas = np.linspace(0.1, 0.8, 15)
 rules = {
     "standard (critically damped)": lambda a: design.standard_from_alpha(a, order=2),
     "Benedict-Bordner": design.benedict_bordner,
-    "M1 (seed 001, eq 24)": design.m1,
+    "QD (seed 000, eqs 28-30)": lambda a: design.qd(design.qd_m_from_alpha(a)),
 }
 
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 4))
