@@ -208,6 +208,18 @@ def test_report_table_says_where_it_came_from(tmp_path):
     assert "notebook.py" in r.table_markup(pd.DataFrame({"a": [1]}))
 
 
+def test_report_links_only_the_tables_it_copies(tmp_path):
+    """A table the page shows but does not copy beside it (wall-clock timings) is named by
+    its place in the build, never linked: a link to it would be broken in the release."""
+    for name in ("league", "engine_speed"):
+        pd.DataFrame({"a": [1.0]}).to_csv(tmp_path / f"{name}.csv", index=False)
+    tables = {n: str(tmp_path / f"{n}.csv") for n in ("league", "engine_speed")}
+    r = Report("benchmark", {}, tables, install=False, released=["league.csv"])
+    assert 'href="tables/league.csv"' in r.table_markup(r.read("league"))
+    speed = r.table_markup(r.read("engine_speed"))
+    assert "href=" not in speed and "engine_speed.csv</code> of the build" in speed
+
+
 def _notebook():
     nb = nbformat.v4.new_notebook()
     nb.cells = [

@@ -57,6 +57,10 @@ class Report:
         The notebook's path in the repository (shown for tables computed in the notebook).
     install : bool
         Install :meth:`table` as the HTML formatter of every DataFrame displayed.
+    released : iterable of str, optional
+        File names of the tables copied beside the page (the report rule's ``tables``
+        outputs); a table the page shows but does not copy (wall-clock timings) is named
+        by its path in the build instead of linked. Default: every table is copied.
     """
 
     def __init__(
@@ -67,8 +71,10 @@ class Report:
         made_by: Mapping | None = None,
         notebook: str | None = None,
         install: bool = True,
+        released=None,
     ):
         self.doc = doc
+        self.released = None if released is None else set(released)
         self.figures = dict(figures)
         self.tables = dict(tables)
         self.made_by = {k: tuple(v) for k, v in (made_by or {}).items()}
@@ -95,7 +101,11 @@ class Report:
             )
         name = Path(self.tables[key]).name
         rule = self._rule(name)
-        link = f'<a href="tables/{html.escape(name)}">tables/{html.escape(name)}</a>'
+        if self.released is not None and name not in self.released:
+            where = html.escape(Path(self.tables[key]).as_posix())
+            link = f"<code>{where}</code> of the build (not a release table)"
+        else:
+            link = f'<a href="tables/{html.escape(name)}">tables/{html.escape(name)}</a>'
         return f"From {link}{', ' + rule if rule else ''}."
 
     # -- reading ------------------------------------------------------------------------

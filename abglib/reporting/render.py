@@ -210,6 +210,7 @@ def report_context(doc, version, input, output, *, repo, nav, made_by, provenanc
         "notebook": notebook,
         "provenance": provenance,
         "settings": dict(settings or {}),
+        "released": [Path(p).name for p in output.tables],
     }
     page = {
         "doc": doc,

@@ -66,6 +66,7 @@ tables = {
 }
 provenance = None
 made_by = {}
+released = None  # file names of the tables copied beside the page (None: all)
 notebook = "workflow/notebooks/antenna.py"
 
 # %%
@@ -74,7 +75,7 @@ from IPython.display import Markdown, display
 
 from abglib.reporting.notebook import Report
 
-R = Report(doc, figures, tables, made_by, notebook)
+R = Report(doc, figures, tables, made_by, notebook, released=released)
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 4)

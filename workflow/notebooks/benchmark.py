@@ -35,6 +35,7 @@ tables = {
 }
 provenance = None
 made_by = {}
+released = None  # file names of the tables copied beside the page (None: all)
 notebook = "workflow/notebooks/benchmark.py"
 settings = {"rank_by": "rmse_x_pred"}  # config.yaml benchmark.rank_by
 
@@ -46,7 +47,7 @@ from abglib.bench import findings
 from abglib.reporting.compare import read_table
 from abglib.reporting.notebook import Report
 
-R = Report(doc, figures, tables, made_by, notebook)
+R = Report(doc, figures, tables, made_by, notebook, released=released)
 
 pd.set_option("display.max_colwidth", 120)
 pd.set_option("display.precision", 4)

@@ -43,6 +43,7 @@ tables = {
 }
 provenance = None
 made_by = {}
+released = None  # file names of the tables copied beside the page (None: all)
 notebook = "workflow/notebooks/faa_bendix.py"
 
 # %%
@@ -52,7 +53,7 @@ from IPython.display import Markdown, display
 from abglib.reporting.compare import non_matches
 from abglib.reporting.notebook import Report
 
-R = Report(doc, figures, tables, made_by, notebook)
+R = Report(doc, figures, tables, made_by, notebook, released=released)
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 5)

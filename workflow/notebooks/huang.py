@@ -42,6 +42,7 @@ tables = {
 }
 provenance = None
 made_by = {}
+released = None  # file names of the tables copied beside the page (None: all)
 notebook = "workflow/notebooks/huang.py"
 
 # %%
@@ -51,7 +52,7 @@ from IPython.display import Markdown, display
 from abglib.reporting.compare import non_matches, read_table
 from abglib.reporting.notebook import Report
 
-R = Report(doc, figures, tables, made_by, notebook)
+R = Report(doc, figures, tables, made_by, notebook, released=released)
 
 pd.set_option("display.max_colwidth", None)
 pd.set_option("display.precision", 5)
