@@ -354,9 +354,9 @@ oat = sweeps[sweeps["design"] == "one_at_a_time"]
 flips = (oat.groupby(["key", "input"])["verdict"].nunique() > 1).groupby("input").sum()
 joint = sweeps[sweeps["design"] == "joint"]
 joint_flips = int(
-    (joint.merge(oat[oat["nominal"].astype(str) == "True"][["key", "verdict"]], on="key",
+    joint.merge(oat[oat["nominal"].astype(str) == "True"][["key", "verdict"]], on="key",
                  suffixes=("", "_nominal"))
-     .query("verdict != verdict_nominal")["key"].nunique())
+     .query("verdict != verdict_nominal")["key"].nunique()
 )
 display(Markdown(
     f"{len(fragile)} rows flip; by input (rows flipping on it): "
