@@ -16,10 +16,10 @@
 #   - the small pipeline: snakemake -s <repo>/Snakefile -d <session>/build
 #     --configfile tests/data/config_small.yaml -c2 (its comparison tables, scorecard and
 #     reports are written under <session>/build/results);
-#   - the unit tests: pytest -m "not pipeline and not install and not slurm and not browser"
-#     (the pipeline-marked tests build the same small config again, which the session has
-#     just done; install and slurm are run once by .ci/run, browser needs Chromium; the
-#     default pytest of .ci/run runs them all once with the newest versions).
+#   - the unit tests: pytest -m "not pipeline and not install and not slurm and not browser
+#     and not docs" (the pipeline-marked tests build the same small config again, which the
+#     session has just done; install and slurm run once in .ci/run, browser needs Chromium,
+#     docs needs the docs extra; .ci/run's own pytest runs them once with the newest versions).
 # numba's compile cache goes to the session's folder, so that neither end overwrites the
 # other's (or the developer's) cache in the source tree.
 #
@@ -38,7 +38,7 @@ matrix="${MATRIX_DIR:-$(mktemp -d "${TMPDIR:-/tmp}/abglib-matrix.XXXXXX")}"
 mkdir -p "$matrix"
 export UV_CACHE_DIR="${UV_CACHE_DIR:-$HOME/.cache/abglib-uv}"
 export PIP_DISABLE_PIP_VERSION_CHECK=1
-marks="not pipeline and not install and not slurm and not browser"
+marks="not pipeline and not install and not slurm and not browser and not docs"
 sessions=("$@")
 [ ${#sessions[@]} -gt 0 ] || sessions=(lowest newest)
 

@@ -13,7 +13,7 @@ from abglib.reporting.workers import run_script as run_in_worker, script_object,
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version
 
-min_version("8.0")
+min_version("9.18")
 
 CONFIG_SCHEMA = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
 
