@@ -131,7 +131,7 @@ SEED_GAP = 10_000
 DEFAULTS = {
     "seed_sets": 5,
     "seed_prime": 1_000_003,
-    "corner_inputs": 4,
+    "corner_inputs": 3,
     "joint_points": 8,
     "design_seed": 20_261_201,
 }

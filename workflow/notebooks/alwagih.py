@@ -405,7 +405,7 @@ display(
 # Every input the paper does not give has a plausible range in `config.yaml`
 # (`alwagih.plausible`, with its basis in the text). Each claim judged on the
 # reconstruction is re-judged one input at a time across that range (the others at their
-# nominal values), jointly (every corner of the ranges of a row with at most four inputs, a
+# nominal values), jointly (every corner of the ranges of a row with at most three inputs, a
 # Latin hypercube for a row with more) and, when its result moves with the random seeds
 # (every Monte Carlo table: `depends_on` ends in `seeds`), under 5 seed sets besides the
 # configured one; a verdict that changes anywhere becomes `not_reproducible` with

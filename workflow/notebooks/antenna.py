@@ -343,7 +343,7 @@ display(comparison)
 # Every reconstructed input a claim depends on has a plausible range (config
 # `antenna.plausible`, with its basis in the text). Each claim is re-judged one input at a
 # time over that range, the others at their nominal values, and jointly: at every corner of
-# the ranges of a row with at most four inputs, over a Latin hypercube for a row with more
+# the ranges of a row with at most three inputs, over a Latin hypercube for a row with more
 # (`robustness.csv`, column `design`). The first table lists the rows whose verdict flips;
 # the second the inputs and the values tried one at a time.
 

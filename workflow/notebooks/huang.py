@@ -476,7 +476,7 @@ display(comparison)
 # Each row below depends on an input the paper does not give (`depends_on`); it was
 # re-judged at every point of that input's plausible range (`config.yaml`,
 # `huang.plausible`, one input at a time), jointly (every corner of the ranges of a row
-# with at most four inputs, a Latin hypercube for a row with more) and, when its result
+# with at most three inputs, a Latin hypercube for a row with more) and, when its result
 # moves with the random seeds (`depends_on` ends in `seeds`), under 5 seed sets besides the
 # configured one (`robustness.csv`, column `design`). `robust = false` marks a flip: the row is then
 # `not_reproducible`, and its note gives where each verdict holds. The full sweep
