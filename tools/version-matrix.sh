@@ -30,7 +30,8 @@
 #        UV           the uv binary (default: uv on PATH, else pip-installed into MATRIX_DIR)
 #        UV_CACHE_DIR uv's cache (default: ~/.cache/abglib-uv, outside the repository)
 #        PY311, PY313 the interpreters (default: the newest pyenv 3.11.x / 3.13.x)
-# Exits non-zero on the first failure, naming the log to read.
+# A failed step is reported with the tail of its log and the rest still runs; the script exits
+# non-zero at the end if any step failed.
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -42,11 +43,13 @@ marks="not pipeline and not install and not slurm and not browser and not docs"
 sessions=("$@")
 [ ${#sessions[@]} -gt 0 ] || sessions=(lowest newest)
 
-fail() {
+failed=()
+fail() { # fail MESSAGE [LOG]: report (with the log's tail) and go on; the exit status says it
     echo "!! $1" >&2
     [ -n "${2:-}" ] && [ -f "$2" ] && { tail -n 40 "$2" >&2; echo "!! full log: $2" >&2; }
-    exit 1
+    failed+=("$1")
 }
+die() { fail "$@"; exit 1; }
 
 # uv: the one on PATH, else a private copy
 uv="${UV:-$(command -v uv || true)}"
@@ -63,7 +66,7 @@ interpreter() {
     found="$(ls -d "$root"/versions/"$minor".* 2>/dev/null | sort -V | tail -n 1)"
     if [ -n "$found" ] && [ -x "$found/bin/python" ]; then echo "$found/bin/python"
     elif command -v "python$minor" >/dev/null; then command -v "python$minor"
-    else fail "no Python $minor (pyenv install $minor, or set PY${minor/./})"; fi
+    else die "no Python $minor (pyenv install $minor, or set PY${minor/./})"; fi
 }
 
 run_session() {
@@ -72,8 +75,9 @@ run_session() {
         lowest) python="${PY311:-$(interpreter 3.11)}"; extras="pipeline,test,kernel"
                 resolution=(--resolution lowest-direct) ;;
         newest) python="${PY313:-$(interpreter 3.13)}"; extras="dev" ;;
-        *) fail "unknown session '$name' (lowest or newest)" ;;
+        *) die "unknown session '$name' (lowest or newest)" ;;
     esac
+    [ -n "$python" ] || die "[$name] no interpreter"
     dir="$matrix/$name"
     venv="$dir/venv"
     rm -rf "$dir" && mkdir -p "$dir"
@@ -81,10 +85,10 @@ run_session() {
 
     t0=$SECONDS
     "$uv" venv --quiet --python "$python" "$venv" >"$dir/install.log" 2>&1 \
-        || fail "[$name] uv venv failed" "$dir/install.log"
+        || { fail "[$name] uv venv failed" "$dir/install.log"; return; }
     (cd "$repo" && "$uv" pip install --python "$venv/bin/python" "${resolution[@]}" \
         -e ".[$extras]") >>"$dir/install.log" 2>&1 \
-        || fail "[$name] install failed" "$dir/install.log"
+        || { fail "[$name] install failed" "$dir/install.log"; return; }
     "$uv" pip freeze --python "$venv/bin/python" >"$dir/versions.txt" 2>/dev/null
     echo "== [$name] installed in $((SECONDS - t0)) s: $(grep -iE \
         '^(numpy|scipy|numba|pandas|matplotlib|snakemake|ipython|pyarrow)==' \
@@ -94,9 +98,8 @@ run_session() {
     t0=$SECONDS
     (cd "$repo" && "$venv/bin/snakemake" -s "$repo/Snakefile" -d "$dir/build" \
         --configfile "$repo/tests/data/config_small.yaml" -c2) >"$dir/snakemake.log" 2>&1 \
-        || fail "[$name] small pipeline failed" "$dir/snakemake.log"
-    t=$((SECONDS - t0))
-    echo "== [$name] small pipeline in ${t} s ($dir/snakemake.log)"
+        && touch "$dir/build.ok" || fail "[$name] small pipeline failed" "$dir/snakemake.log"
+    echo "== [$name] small pipeline in $((SECONDS - t0)) s ($dir/snakemake.log)"
 
     t0=$SECONDS
     (cd "$repo" && "$venv/bin/pytest" -p no:cacheprovider -q -m "$marks") \
@@ -109,8 +112,9 @@ for s in "${sessions[@]}"; do run_session "$s"; done
 
 low="$matrix/lowest/build/results"
 new="$matrix/newest/build/results"
-if [ ! -d "$low" ] || [ ! -d "$new" ]; then
-    echo "== one session only: no comparison (logs in $matrix)"
+if [ ! -f "$matrix/lowest/build.ok" ] || [ ! -f "$matrix/newest/build.ok" ]; then
+    echo "== not both builds: no comparison (logs in $matrix)"
+    [ ${#failed[@]} = 0 ] || die "${#failed[@]} step(s) failed: ${failed[*]}"
     exit 0
 fi
 py="$matrix/newest/venv/bin/python"
@@ -154,7 +158,6 @@ EOF
 
 version="$("$py" -c 'import abglib; print(abglib.__version__)')"
 abglib="$matrix/newest/venv/bin/abglib"
-status=0
 for pair in "lowest newest" "newest lowest"; do
     set -- $pair
     echo "== abglib verify: $1's tables against $2's ($matrix/verify-$1-vs-$2.log)"
@@ -164,8 +167,8 @@ for pair in "lowest newest" "newest lowest"; do
         tail -n 1 "$matrix/verify-$1-vs-$2.log"
     else
         cat "$matrix/verify-$1-vs-$2.log" >&2
-        status=1
+        fail "abglib verify: $1's tables against $2's"
     fi
 done
-[ $status = 0 ] || fail "the two ends' tables do not verify against each other (logs in $matrix)"
+[ ${#failed[@]} = 0 ] || die "${#failed[@]} step(s) failed: ${failed[*]} (logs in $matrix)"
 echo "== version matrix passed (logs in $matrix)"
