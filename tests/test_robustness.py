@@ -425,3 +425,118 @@ def test_rests_on_chance_compares_value_note_and_readings():
     assert R.rests_on_chance(a, Result(1.0, "n'"))
     assert not R.rests_on_chance(Result(float("nan"), ""), Result(float("nan"), ""))
     assert R.rests_on_chance(Result(True, ""), Result(1, ""))
+
+
+# --------------------------------------------------------------------------- draws per joint point
+PUB_CORNER = pd.DataFrame(
+    [("corner.draw", "eq. 7", "a Monte Carlo mean at inputs a and b", "1.00", "p. 7")],
+    columns=["key", "item", "quantity", "published", "where"],
+)
+
+CORNER_CLAIMS = ClaimSet("toy")
+
+
+def _set_of(s) -> int:
+    # the seed set a toy study was built with (seed 1000 + k p)
+    return round((s.cfg["mc"]["seed"] - 1000) / R.DEFAULTS["seed_prime"])
+
+
+@CORNER_CLAIMS.claim("corner.draw", depends_on=("toy.a", "toy.b"))
+def _corner_draw(s):
+    # 1.00 everywhere except at the corner a = b = 1.1 under seed set 4: there 1.1. The
+    # corner is drawn with set 3 (toy.a and toy.b's one-at-a-time points take sets 1-4,
+    # the corners 5, 1, 2, 3), so only its second draw (set 4) sees the flip; set 4
+    # elsewhere (toy.b = 1.1 alone, the nominal inputs) gives 1.00. The note names the
+    # set, so the row rests on chance.
+    k = _set_of(s)
+    off = s.cfg["a"] > 1.05 and s.cfg["b"] > 1.05 and k == 4
+    return Result(1.1 if off else 1.0, f"drawn with seed set {k}")
+
+
+def run_corner(**robustness):
+    cfg = config(**robustness)
+    return evaluate(
+        "toy", CORNER_CLAIMS, PUB_CORNER, Toy(cfg, PUB_CORNER), lambda c: Toy(c, PUB_CORNER)
+    )
+
+
+def test_a_flip_under_the_second_draw_of_a_joint_point_is_found_with_two():
+    comp, points = run_corner(joint_seed_sets=2)
+    row = comp.iloc[0]
+    assert row["verdict"] == "not_reproducible" and row["robust"] == "false"
+    assert row["depends_on"] == "toy.a;toy.b;seeds"
+    joint = points[points["design"] == "joint"]
+    # each corner under its own set and the next one: (5, 1), (1, 2), (2, 3), (3, 4)
+    assert list(zip(joint["value"], joint["seed_set"], strict=True)) == [
+        ("0.9;0.9", 5),
+        ("0.9;0.9", 1),
+        ("0.9;1.1", 1),
+        ("0.9;1.1", 2),
+        ("1.1;0.9", 2),
+        ("1.1;0.9", 3),
+        ("1.1;1.1", 3),
+        ("1.1;1.1", 4),
+    ]
+    bad = joint[joint["verdict"] != "match"]
+    # (the reading catalogue may explain the off value: any verdict but match is a flip)
+    assert list(zip(bad["value"], bad["seed_set"], strict=True)) == [("1.1;1.1", 4)]
+    drawn = "4 points moving 2 or more inputs at once, 8 draws: each point under 2 seed sets"
+    assert drawn in row["note"]
+    assert f"{bad['verdict'].iloc[0]} at 1: a=1.1, b=1.1 (seed set 4)" in row["note"]
+    # nowhere else: one at a time and the seed sets at the nominal inputs all match
+    assert set(points[points["design"] != "joint"]["verdict"]) == {"match"}
+
+
+def test_the_same_flip_is_missed_with_one_draw_per_joint_point():
+    comp, points = run_corner(joint_seed_sets=1)
+    row = comp.iloc[0]
+    assert row["verdict"] == "match" and row["robust"] == "true"
+    joint = points[points["design"] == "joint"]
+    assert list(joint["seed_set"]) == [5, 1, 2, 3] and set(joint["verdict"]) == {"match"}
+
+
+def test_rows_without_random_draws_keep_one_draw_per_joint_point():
+    _, points = run(config(joint_seed_sets=3))
+    # 'sum' and 'product' read no seed: one draw at each of the four corners
+    for key in ("sum", "product"):
+        joint = points[(points["key"] == key) & (points["design"] == "joint")]
+        assert list(joint["seed_set"]) == [5, 1, 2, 3], key
+
+
+def test_the_draws_of_a_joint_point_share_the_studies():
+    Toy.built = 0
+    run_corner(joint_seed_sets=2)
+    # nominal + 4 one-at-a-time + 4 corners x 2 sets + 5 seed sets
+    assert Toy.built == 1 + 4 + 8 + 5
+    Toy.built = 0
+    run_corner(joint_seed_sets=1)
+    assert Toy.built == 1 + 4 + 4 + 5
+
+
+def test_draws_of_point_are_the_own_set_and_the_next_in_turn():
+    assert R.draws_of_point(3, 5, 1) == [3]
+    assert R.draws_of_point(3, 5, 2) == [3, 4]
+    assert R.draws_of_point(4, 5, 3) == [4, 5, 1]
+    assert R.draws_of_point(2, 5, 5) == [2, 3, 4, 5, 1]
+    assert R.draws_of_point(0, 0, 2) == [0]  # a document without seeds
+    with pytest.raises(AbglibValueError, match=r"1 <= per_point <= 5, got 6"):
+        R.draws_of_point(1, 5, 6)
+    with pytest.raises(AbglibValueError, match=r"1 <= k <= 5, got 7"):
+        R.draws_of_point(7, 5, 2)
+
+
+@pytest.mark.parametrize(
+    "spec, match",
+    [
+        ({"joint_seed_sets": 0}, r"1 <= robustness.joint_seed_sets <= 50, got 0"),
+        ({"joint_seed_sets": 2.0}, r"robustness.joint_seed_sets must be an integer"),
+        (
+            {"joint_seed_sets": 6},
+            r"1 <= robustness.joint_seed_sets <= robustness.seed_sets = 5, got 6",
+        ),
+    ],
+)
+def test_bad_joint_seed_sets_name_the_value_and_the_allowed_range(spec, match):
+    with pytest.raises(AbglibValueError, match=match):
+        R.settings({"robustness": spec})
+    assert R.settings({"robustness": {"seed_sets": 8, "joint_seed_sets": 6}}).joint_seed_sets == 6

@@ -28,7 +28,8 @@ document's config section (``<doc>.plausible.<dotted path>``: ``values: [...]`` 
 :func:`evaluate` recomputes the claim one input at a time over that range (the others at
 their nominal values), at the points of the document's joint design over those inputs
 (corners, or a Latin hypercube when a row has many), and, when the claim's result moves
-with the random seeds (a Monte Carlo result), under every seed set
+with the random seeds (a Monte Carlo result), under every seed set and under
+``robustness.joint_seed_sets`` seed sets at each joint point
 (:mod:`abglib.verdicts.robustness`), and judges each point with the same tolerance. The
 same verdict everywhere gives that verdict with ``robust=true``; a flip gives
 ``not_reproducible``, ``robust=false`` and a note saying where each verdict holds
@@ -522,36 +523,45 @@ def evaluate(
                 point("one_at_a_time", name, _fmt(value), k, _same(value, rng.nominal), rep, v)
             if len({v for _, v in by_value}) > 1:
                 flips.append(_describe_flip(rng, by_value))
-        # jointly: the document's design, projected onto the row's inputs
+        # a row whose result moves under seed set 1 rests on a Monte Carlo result
+        chance = False
+        if seeded:
+            r1, v1, rep1 = judged_at(under(1), pub, claim)
+            chance = robustness.rests_on_chance(res, r1)
+        # jointly: the document's design, projected onto the row's inputs; a Monte Carlo
+        # row under design.joint_seed_sets seed sets at each point (the point's own set
+        # and the next ones in turn), any other row under the point's own
+        per_point = design.joint_seed_sets if chance else 1
         by_point, seen = [], set()
-        for p, k in zip(joint, joint_sets, strict=True):
+        for p, k0 in zip(joint, joint_sets, strict=True):
             proj = robustness.project(p, inputs)
             key = tuple((n, _hashable(v)) for n, v in proj)
             if len(proj) < 2 or key in seen:
                 continue
             seen.add(key)
-            _, v, rep = judged_at(at(p.values, k), pub, claim)
-            by_point.append((proj, v))
             names = ";".join(n for n, _ in proj)
-            point("joint", names, ";".join(_fmt(x) for _, x in proj), k, False, rep, v)
-        # seed sets: a row whose result moves under set 1 rests on a Monte Carlo result
+            for k in robustness.draws_of_point(k0, len(seeded), per_point):
+                _, v, rep = judged_at(at(p.values, k), pub, claim)
+                by_point.append((proj, v, k))
+                point("joint", names, ";".join(_fmt(x) for _, x in proj), k, False, rep, v)
+        # seed sets: a Monte Carlo row under every set at its nominal inputs
         by_set = []
-        if seeded:
-            r1, v1, rep1 = judged_at(under(1), pub, claim)
-            if robustness.rests_on_chance(res, r1):
-                by_set = [(nominal_verdict, row["reproduced"]), (v1, rep1)]
-                by_set += [judged_at(under(k), pub, claim)[1:] for k in range(2, len(seeded) + 1)]
-                for k, (v, rep) in enumerate(by_set):
-                    point("seed_set", "seeds", str(k), k, k == 0, rep, v)
-                row["depends_on"] = ";".join(x for x in (row["depends_on"], "seeds") if x)
+        if chance:
+            by_set = [(nominal_verdict, row["reproduced"]), (v1, rep1)]
+            by_set += [judged_at(under(k), pub, claim)[1:] for k in range(2, len(seeded) + 1)]
+            for k, (v, rep) in enumerate(by_set):
+                point("seed_set", "seeds", str(k), k, k == 0, rep, v)
+            row["depends_on"] = ";".join(x for x in (row["depends_on"], "seeds") if x)
         if inputs or by_set:
             parts = []
             causes = []
             drawn = ", each point under its own seed set" if seeded else ""
             if flips:
                 parts.append(f"one at a time (others nominal{drawn}): {'; '.join(flips)}")
-            if any(v != nominal_verdict for _, v in by_point):
-                parts.append(robustness.describe_joint(by_point, drawn=drawn))
+            if any(e[1] != nominal_verdict for e in by_point):
+                parts.append(
+                    robustness.describe_joint(by_point, drawn="" if per_point > 1 else drawn)
+                )
             if parts:
                 causes.append("inputs the document does not give")
             if len({v for v, _ in by_set}) > 1:

@@ -37,7 +37,16 @@ verdict holds.
 Every point off the nominal inputs, one at a time or joint, is drawn with one of the seed
 sets below in turn (:func:`point_seed_sets`), so that a Monte Carlo row meets a fresh
 draw at each of them: a verdict that holds only for the configured draw away from the
-nominal inputs is found as well.
+nominal inputs is found as well. A Monte Carlo row is judged at each joint point under
+``joint_seed_sets`` seed sets (:func:`draws_of_point`: the point's own set and the next
+ones in turn); a row that reads no seeded draw keeps one (its result is the same under
+every set). One draw per joint point was too few: with one, an Al-Wagih row (Table 2,
+X, 'M5 gives very lower RMSE') was ``robust=true`` under the configured seeds and flipped
+when every seed was shifted by 104729 (M5 lowest at 3 of its 16 joint points under the
+shifted draw, about 20 % per point, so 16 single draws miss it with chance 0.8**16, about
+3 %). The default is the smallest number of draws per joint point for which no
+``robust=true`` row of Al-Wagih or Huang flipped under seed shifts by three primes
+(104729, 7919, 1299709; measured, ``/work/helpers/h8_changes.md``).
 
 ``seed_set``
     the document's config with every random seed it reads moved together
@@ -85,6 +94,7 @@ __all__ = [
     "corner_design",
     "describe_joint",
     "describe_seed_sets",
+    "draws_of_point",
     "ends",
     "joint_design",
     "latin_hypercube",
@@ -102,8 +112,9 @@ __all__ = [
 #: one of :data:`DESIGNS`. ``input``/``value``: the input and its value (one at a time);
 #: the moved inputs and their values, ``;``-separated and aligned (joint); ``seeds`` and
 #: the set ``k`` (seed set; ``k = 0`` the configured seeds). ``seed_set`` is the seed set
-#: the point was drawn with (:func:`point_seed_sets`; 0: the configured seeds). ``nominal``
-#: is true at the configured point.
+#: the point was drawn with (:func:`point_seed_sets`; 0: the configured seeds); a Monte
+#: Carlo row has one joint row per seed set of the point (:func:`draws_of_point`).
+#: ``nominal`` is true at the configured point.
 ROBUSTNESS_COLUMNS = [
     "key",
     "design",
@@ -131,6 +142,7 @@ SEED_GAP = 10_000
 DEFAULTS = {
     "seed_sets": 5,
     "seed_prime": 1_000_003,
+    "joint_seed_sets": 2,
     "corner_inputs": 3,
     "joint_points": 8,
     "design_seed": 20_261_201,
@@ -140,6 +152,7 @@ DEFAULTS = {
 _LIMITS = {
     "seed_sets": (MIN_SEED_SETS, 50),
     "seed_prime": (100_003, 2**31 - 1),
+    "joint_seed_sets": (1, 50),
     "corner_inputs": (1, 8),
     "joint_points": (4, 256),
     "design_seed": (0, 2**32 - 1),
@@ -173,6 +186,9 @@ class Design:
         Seed sets besides the configured one (at least :data:`MIN_SEED_SETS`).
     seed_prime : int
         Set ``k`` moves every seed by ``k * seed_prime`` (a prime).
+    joint_seed_sets : int
+        Seed sets a Monte Carlo row is judged under at each joint point (at most
+        ``seed_sets``; :func:`draws_of_point`).
     corner_inputs : int
         Rows with at most this many inputs are judged at every corner of their ranges;
         rows with more, over the Latin hypercube.
@@ -184,6 +200,7 @@ class Design:
 
     seed_sets: int = DEFAULTS["seed_sets"]
     seed_prime: int = DEFAULTS["seed_prime"]
+    joint_seed_sets: int = DEFAULTS["joint_seed_sets"]
     corner_inputs: int = DEFAULTS["corner_inputs"]
     joint_points: int = DEFAULTS["joint_points"]
     design_seed: int = DEFAULTS["design_seed"]
@@ -197,8 +214,9 @@ def settings(config: Mapping) -> Design:
     ------
     AbglibValueError
         An unknown key, a value that is not an integer, outside its allowed range (e.g.
-        fewer than :data:`MIN_SEED_SETS` seed sets), or a ``seed_prime`` that is not
-        prime; the message names the key, the allowed range and the value.
+        fewer than :data:`MIN_SEED_SETS` seed sets, or more ``joint_seed_sets`` than
+        ``seed_sets``), or a ``seed_prime`` that is not prime; the message names the
+        key, the allowed range and the value.
     """
     spec = config.get("robustness", None) or {}
     if not isinstance(spec, Mapping):
@@ -218,6 +236,11 @@ def settings(config: Mapping) -> Design:
         if not lo <= int(value) <= hi:
             raise AbglibValueError(f"{name} must satisfy {lo} <= {name} <= {hi}, got {value!r}")
         out[key] = int(value)
+    if out["joint_seed_sets"] > out["seed_sets"]:
+        raise AbglibValueError(
+            f"robustness.joint_seed_sets must satisfy 1 <= robustness.joint_seed_sets <= "
+            f"robustness.seed_sets = {out['seed_sets']}, got {out['joint_seed_sets']}"
+        )
     if not _is_prime(out["seed_prime"]):
         raise AbglibValueError(
             f"robustness.seed_prime must be a prime, got {out['seed_prime']} "
@@ -577,6 +600,29 @@ def point_seed_sets(
     return oat, out
 
 
+def draws_of_point(k: int, n_sets: int, per_point: int) -> list[int]:
+    """The seed sets a Monte Carlo row is judged under at a joint point drawn with set
+    ``k`` (:func:`point_seed_sets`): ``k`` and the next ``per_point - 1`` sets in turn,
+    cycling through ``1 .. n_sets`` (so ``per_point`` distinct sets, since ``per_point
+    <= n_sets``). With no seed set (``k = 0``) the configured seeds alone, ``[0]``.
+
+    Raises
+    ------
+    AbglibValueError
+        ``per_point`` outside ``[1, n_sets]`` or ``k`` outside ``[1, n_sets]`` when
+        there are seed sets.
+    """
+    if n_sets == 0 or k == 0:
+        return [0]
+    if not 1 <= per_point <= n_sets:
+        raise AbglibValueError(
+            f"seed sets per joint point must satisfy 1 <= per_point <= {n_sets}, got {per_point}"
+        )
+    if not 1 <= k <= n_sets:
+        raise AbglibValueError(f"seed set k must satisfy 1 <= k <= {n_sets}, got {k}")
+    return [1 + (k - 1 + i) % n_sets for i in range(per_point)]
+
+
 def project(point: JointPoint, inputs: Sequence[str]) -> tuple[tuple[str, Any], ...]:
     """The inputs of a row that ``point`` moves, with their values, in the row's order."""
     return tuple((n, point.values[n]) for n in inputs if n in point.values)
@@ -597,29 +643,41 @@ def describe_point(projection: Sequence[tuple[str, Any]]) -> str:
     return ", ".join(f"{_short(n)}={_fmt(v)}" for n, v in projection)
 
 
-def describe_joint(
-    judged: Sequence[tuple[Sequence[tuple[str, Any]], str]], limit: int = 6, drawn: str = ""
-) -> str:
-    """Where each verdict holds over the joint points of one row: ``judged`` lists
-    ``(projection, verdict)``. The verdicts held at fewer points are listed point by
-    point (at most ``limit`` each, then a count); the most common one by its count.
-    ``drawn`` is added to the design's description (e.g. how the points were drawn)."""
+def describe_joint(judged: Sequence[tuple], limit: int = 6, drawn: str = "") -> str:
+    """Where each verdict holds over the joint points of one row.
+
+    ``judged`` lists ``(projection, verdict)``, or ``(projection, verdict, k)`` when a
+    point is judged under several seed sets (a Monte Carlo row, :func:`draws_of_point`):
+    one entry per draw, ``k`` its seed set. The verdicts held at fewer draws are listed
+    draw by draw (at most ``limit`` each, then a count; with the seed set when a point
+    has several draws); the most common one by its count. ``drawn`` is added to the
+    design's description (e.g. how the points were drawn).
+    """
+    points = list(dict.fromkeys(tuple(e[0]) for e in judged))
+    per_point = len(judged) // len(points) if points else 1
     by: dict[str, list] = {}
-    for proj, v in judged:
-        by.setdefault(v, []).append(proj)
+    for e in judged:
+        by.setdefault(e[1], []).append(e)
     order = sorted(by, key=lambda v: (-len(by[v]), v))
+
+    def where(e) -> str:
+        if per_point > 1 and len(e) > 2:
+            return f"{describe_point(e[0])} (seed set {e[2]})"
+        return describe_point(e[0])
+
     parts = []
     for i, v in enumerate(order):
         pts = by[v]
         if i == 0 and len(order) > 1:
             parts.append(f"{v} at {len(pts)} of them")
             continue
-        listed = "; ".join(describe_point(p) for p in pts[:limit])
+        listed = "; ".join(where(e) for e in pts[:limit])
         more = f"; and {len(pts) - limit} more (robustness.csv)" if len(pts) > limit else ""
         parts.append(f"{v} at {len(pts)}: {listed}{more}")
-    return f"jointly ({len(judged)} points moving 2 or more inputs at once{drawn}): " + ", ".join(
-        parts
-    )
+    what = f"{len(points)} points moving 2 or more inputs at once"
+    if per_point > 1:
+        what += f", {len(judged)} draws: each point under {per_point} seed sets"
+    return f"jointly ({what}{drawn}): " + ", ".join(parts)
 
 
 def describe_seed_sets(verdicts: Sequence[str], design: Design) -> str:
