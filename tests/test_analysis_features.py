@@ -151,9 +151,10 @@ def test_peak_two_routes_and_brute_force(gains, output):
     # a flat maximum fixes its location only to ~sqrt(eps) from function values (grid route)
     assert w_poly == pytest.approx(w_grid, rel=1e-6, abs=1e-7)
     # no grid point beats the exact peak, up to the polynomial route's accuracy stated
-    # above (rel 1e-8 near the stability boundary, where |H| reaches ~1e2)
+    # above (rel 1e-8 near the stability boundary, where |H| reaches ~1e3; hypothesis found
+    # alpha 1.95, |H| = 656 off by 1.4e-9 relative on one CPU)
     assert mag(gains, DENSE, output).max() <= (1 + ov_poly) * (1 + 1e-8)
-    assert mag(gains, w_poly, output) == pytest.approx(1 + ov_poly, rel=1e-9)
+    assert mag(gains, w_poly, output) == pytest.approx(1 + ov_poly, rel=1e-8)
 
 
 @settings(max_examples=20, deadline=None)
