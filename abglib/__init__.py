@@ -23,6 +23,10 @@ simulate
     Trajectories and measurement noise.
 methods
     The gain-selection methods M1-M5 of seed 001 (and a causal M5), batched.
+verdicts
+    Judging a printed number against a reproduced one: tolerance from the printed digits,
+    the reading catalogue with each family's look-elsewhere chance, vague words, and
+    robustness over plausible inputs and random seeds.
 
 Layers installed with extras (``pip install "abglib[...]"``)
 ------------------------------------------------------------
@@ -59,6 +63,7 @@ _SUBMODULES = {
     "replications",
     "reporting",
     "simulate",
+    "verdicts",
 }
 
 
