@@ -26,6 +26,16 @@ import pytest
 
 from abglib._compat import UpstreamChanged, version_of
 
+
+@pytest.fixture(autouse=True)
+def _main_module_kept():
+    """An InteractiveShell makes its namespace ``sys.modules["__main__"]`` (execute.py puts
+    it back after a notebook); the shells built here must too, or a later test's
+    multiprocessing (the fork server reads ``__main__.__spec__``) meets IPython's stand-in."""
+    main = sys.modules.get("__main__")
+    yield
+    sys.modules["__main__"] = main
+
 REPO = Path(__file__).resolve().parents[1]
 
 
