@@ -540,3 +540,16 @@ def test_bad_joint_seed_sets_name_the_value_and_the_allowed_range(spec, match):
     with pytest.raises(AbglibValueError, match=match):
         R.settings({"robustness": spec})
     assert R.settings({"robustness": {"seed_sets": 8, "joint_seed_sets": 6}}).joint_seed_sets == 6
+
+
+def test_describe_joint_counts_points_with_list_valued_inputs():
+    """A joint point may set a list-valued input (the antenna's kalman.v_v diagonal)."""
+    judged = [
+        ((("antenna.kalman.v_v", [0.001, 1.0]), ("antenna.dt", 0.1)), "match", 1),
+        ((("antenna.kalman.v_v", [0.001, 1.0]), ("antenna.dt", 0.1)), "mismatch", 2),
+        ((("antenna.kalman.v_v", [1.0, 1.0]), ("antenna.dt", 0.1)), "match", 3),
+        ((("antenna.kalman.v_v", [1.0, 1.0]), ("antenna.dt", 0.1)), "match", 4),
+    ]
+    text = R.describe_joint(judged)
+    assert "2 points moving 2 or more inputs at once, 4 draws" in text
+    assert "mismatch at 1: kalman.v_v=[0.001, 1.0], dt=0.1 (seed set 2)" in text

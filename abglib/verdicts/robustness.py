@@ -661,7 +661,8 @@ def describe_joint(judged: Sequence[tuple], limit: int = 6, drawn: str = "") -> 
     has several draws); the most common one by its count. ``drawn`` is added to the
     design's description (e.g. how the points were drawn).
     """
-    points = list(dict.fromkeys(tuple(e[0]) for e in judged))
+    # a projection's values may be lists (a diagonal): count points by their keys
+    points = list(dict.fromkeys(tuple((n, _key(v)) for n, v in e[0]) for e in judged))
     per_point = len(judged) // len(points) if points else 1
     by: dict[str, list] = {}
     for e in judged:
