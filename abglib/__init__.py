@@ -50,7 +50,7 @@ from ._checks import AbglibValueError
 from .engine import TrackResult, track
 from .gains import Gains
 
-__version__ = "0.3.1"
+__version__ = "0.4.0"
 
 __all__ = ["AbglibValueError", "Gains", "TrackResult", "__version__", "track"]
 
