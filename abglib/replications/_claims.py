@@ -39,7 +39,6 @@ same verdict everywhere gives that verdict with ``robust=true``; a flip gives
 
 from __future__ import annotations
 
-import copy
 import math
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -54,7 +53,7 @@ from .._checks import AbglibValueError
 from ..reporting.compare import COMPARISON_COLUMNS, SENTENCE_COLUMN
 from ..verdicts import Alternative, Reading, format_number, robustness
 from ..verdicts._judge import _assess, judge_sentences
-from ..verdicts.robustness import ROBUSTNESS_COLUMNS
+from ..verdicts.robustness import ROBUSTNESS_COLUMNS, config_get, with_values
 
 __all__ = [
     "ROBUSTNESS_COLUMNS",
@@ -261,40 +260,10 @@ class Study:
 
 
 # --------------------------------------------------------------------------- ranges
-def config_get(config: Mapping, path: str):
-    """The value at a dotted path (``'huang.radar.tau_s'``) of a nested mapping."""
-    node = config
-    for part in path.split("."):
-        if isinstance(node, Mapping) and part in node:
-            node = node[part]
-        elif isinstance(node, list) and part.isdigit() and int(part) < len(node):
-            node = node[int(part)]
-        else:
-            raise AbglibValueError(f"config has no entry {path!r} (missing {part!r})")
-    return node
-
-
 def config_with(config: Mapping, path: str, value) -> dict:
-    """A deep copy of ``config`` with the dotted ``path`` set to ``value``."""
-    config_get(config, path)  # must exist: a typo must not create a new key
-    out = copy.deepcopy(_plain(config))
-    node = out
-    parts = path.split(".")
-    for part in parts[:-1]:
-        node = node[int(part)] if isinstance(node, list) else node[part]
-    if isinstance(node, list):
-        node[int(parts[-1])] = value
-    else:
-        node[parts[-1]] = value
-    return out
-
-
-def _plain(x):
-    if isinstance(x, Mapping):
-        return {k: _plain(v) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
-        return [_plain(v) for v in x]
-    return x
+    """A deep copy of ``config`` with the dotted ``path`` set to ``value``
+    (:func:`abglib.verdicts.robustness.with_values` of one path)."""
+    return with_values(config, {path: value})
 
 
 @dataclass(frozen=True)

@@ -114,6 +114,7 @@ __all__ = [
     "settings",
     "with_seeds_shifted",
     "with_values",
+    "config_get",
 ]
 
 #: Columns of ``results/<doc>/robustness.csv``: one row per judged point. ``design`` is
@@ -272,7 +273,15 @@ def _is_prime(n: int) -> bool:
 
 
 # --------------------------------------------------------------------------- config paths
-def _get(config: Mapping, path: str):
+def config_get(config: Mapping, path: str):
+    """The value at a dotted path (``'huang.radar.tau_s'``) of a nested mapping (a list
+    is indexed by a number: ``'datasets.scenarios.0.seed'``).
+
+    Raises
+    ------
+    AbglibValueError
+        Naming the path and the part that is missing.
+    """
     node = config
     for part in path.split("."):
         if isinstance(node, Mapping) and part in node:
@@ -296,7 +305,7 @@ def with_values(config: Mapping, values: Mapping[str, Any]) -> dict:
     """A deep copy of ``config`` with every dotted path of ``values`` set (each path must
     exist: a typo must not create a key)."""
     for path in values:
-        _get(config, path)
+        config_get(config, path)
     out = _plain(config)
     for path, value in values.items():
         parts = path.split(".")
