@@ -48,21 +48,7 @@ rule benchmark_cell:
         },
         digits=config["significant_digits"],
     run:
-        from abglib.bench.cell import cell_job
-
-        cell_job(
-            input.parquet,
-            output.cell,
-            log[0],
-            variant=wildcards.variant,
-            spec=params.spec,
-            scenario=wildcards.scenario,
-            scenario_spec=params.scenario_spec,
-            settings=params.settings,
-            seed=params.seed,
-            digits=params.digits,
-            threads=threads,
-        )
+        bench_cell(input, output, params, wildcards, threads, log)
 
 
 rule benchmark_league:

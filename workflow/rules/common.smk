@@ -340,6 +340,27 @@ def bench_cell_code(wildcards):
     return code_of("abglib.bench.cell", extra=[f] if f else [])
 
 
+def bench_cell(input, output, params, wildcards, threads, log):
+    """The benchmark_cell rule's job, in Snakemake's process: one cell of the matrix
+    (abglib.bench.cell.cell_job). A function, so that the rule's run: stays one call
+    (snakemake --lint measures a run: block by its bytecode, longer on Python 3.13)."""
+    from abglib.bench.cell import cell_job
+
+    cell_job(
+        input.parquet,
+        output.cell,
+        log[0],
+        variant=wildcards.variant,
+        spec=params.spec,
+        scenario=wildcards.scenario,
+        scenario_spec=params.scenario_spec,
+        settings=params.settings,
+        seed=params.seed,
+        digits=params.digits,
+        threads=threads,
+    )
+
+
 def bench_runs(scenario):
     """Monte Carlo runs of a cell: the config override, else the dataset's own runs."""
     runs = BENCH.get("runs")
