@@ -56,7 +56,7 @@ TABLE_TARGETS = list(precision.TABLE_TARGETS)
 def two_runs(tmp_path_factory):
     """Run 1: the whole small build. Run 2: its tables again, with perturbed arithmetic
     (``ABGLIB_PERTURB``, abglib._perturb): every float input of the numerical core moved by
-    up to ~1e-13 relative, more than another CPU, BLAS kernel or dependency set moves it."""
+    up to 7 ulps, what another CPU, BLAS kernel or dependency set moves one operation by."""
     dirs = []
     envs = {"run1": None, "run2": dict(os.environ, **{PERTURB: "1"})}
     targets = {"run1": [], "run2": TABLE_TARGETS}

@@ -171,3 +171,24 @@ def test_table_keys():
     assert prec.table_key("results/alwagih/table1.csv") == "alwagih/table1"
     assert prec.table_key("/x/results/benchmark/cells/std_ab/alwagih_w1.csv") == "benchmark/cells"
     assert prec.table_key("results/benchmark/cells.csv") == "benchmark/cells"
+
+
+def test_derive_folders_mixed_columns_and_counts(tmp_path):
+    """A comparison's ``reproduced`` mixes numbers and a qualitative claim's True/False:
+    the numbers give the spec, the words must not move; whole numbers that stay whole in
+    every run are counts (must be equal), a float that is whole in one run is a float."""
+    rows = {
+        0: "reproduced,n,bias\nTrue,3,-8\n0.5,4,-16\n1.19e-12,5,-2\n",
+        1: "reproduced,n,bias\nFalse,3,-7.9999999999999591\n0.5,4,-16\n1.22e-12,6,-2\n",
+    }
+    for k, text in rows.items():
+        (tmp_path / f"r{k}" / "doc").mkdir(parents=True)
+        (tmp_path / f"r{k}" / "doc" / "t.csv").write_text(text, encoding="utf-8")
+    d = prec.derive_folders(tmp_path / "r0", [tmp_path / "r1"])
+    specs = d.specs()["doc/t"]
+    # bias is a float column (no text difference), keeping 13 > 10 digits: no spec
+    assert specs == {"reproduced": "<1e-11:10"}
+    assert sorted(d.text_differences) == [
+        ("doc/t.csv", 1, "reproduced", "True", "False"),
+        ("doc/t.csv", 3, "n", "5", "6"),
+    ]

@@ -10,7 +10,7 @@ How the digits are found (``abglib precision``, :func:`derive_precision`):
    fresh directories, with every float written at :data:`RAW_DIGITS` significant digits
    (``ABGLIB_RAW_TABLES=1``: no declared precision, no bounds): once plain and once for
    each perturbation seed ``k = 1..runs`` (``ABGLIB_PERTURB=k``: every floating-point
-   input of the numerical core moved by up to ~1.1e-13 relative, :mod:`abglib._perturb`).
+   input of the numerical core moved by up to 7 ulps, :mod:`abglib._perturb`).
 2. For each numeric cell, its deviation ``e`` is the largest difference between a
    perturbed run and the plain one, times the safety factor :data:`SAFETY`. A cell
    written with ``n`` significant digits is reproducible when one unit of its last digit
@@ -223,7 +223,10 @@ def column_spec(
         )
     ok = ~nan[0]
     x = values[0, ok]
-    dev = safety * np.max(np.abs(values[1:, ok] - x), axis=0)
+    other = values[1:, ok]
+    with np.errstate(invalid="ignore"):  # inf - inf: equal infinities do not move
+        moved = np.where(other == x, 0.0, np.abs(other - x))
+    dev = safety * np.max(np.nan_to_num(moved, nan=np.inf), axis=0)
     ax = np.abs(x)
     with np.errstate(divide="ignore"):
         keep = np.where(
@@ -334,38 +337,49 @@ def derive_folders(
                 continue
             header = runs[0][0]
             for j, col in enumerate(header):
-                cells = [[row[j] if j < len(row) else "" for row in r[1:]] for r in runs]
-                nums = [[_number(t) for t in c] for c in cells]
-                if any(v is None for c in nums for v in c):
-                    for i, texts in enumerate(zip(*cells, strict=True), start=1):
-                        for t in texts[1:]:
-                            if t != texts[0]:
-                                out.text_differences.append((str(rel), i, col, texts[0], t))
-                                break
-                    continue
-                if all(_is_int(t) or t == "" for c in cells for t in c):
-                    for i, texts in enumerate(zip(*cells, strict=True), start=1):
-                        if len(set(texts)) > 1:
-                            out.text_differences.append((str(rel), i, col, texts[0], texts[1]))
-                    continue
-                values = np.array(nums, dtype=float)
-                try:
-                    spec = column_spec(values, cap)
-                except AbglibValueError as exc:
-                    out.problems.append(f"{rel}, column {col}: {exc}")
-                    continue
-                diff = np.nan_to_num(np.abs(values[1:] - values[0]), nan=0.0)
-                out.columns.append(
-                    ColumnPrecision(
-                        key,
-                        col,
-                        spec,
-                        values.shape[1],
-                        _roundoff_cells(values, spec),
-                        float(diff.max()) if diff.size else 0.0,
-                    )
-                )
+                _derive_column(out, rel, key, col, [[row[j] for row in r[1:]] for r in runs], cap)
     return out
+
+
+def _derive_column(out: Derivation, rel, key: str, col: str, cells, cap: int) -> None:
+    """One column of one table in every run (``cells[run][row]``, text as written): its
+    numeric rows give the spec, its text rows (a qualitative claim's ``True`` among the
+    reproduced numbers, notes, verdicts) must be identical, as must a column of counts."""
+    rows = list(zip(*cells, strict=True))
+    numeric = [all(_number(t) is not None for t in texts) for texts in rows]
+    # a column of counts: whole numbers in every run (a float column's whole values, e.g.
+    # a bias of exactly -8, are written so too, but move to a fraction in some run)
+    counts = all(numeric) and all(_is_int(t) or t == "" for run in cells for t in run)
+    for i, texts in enumerate(rows, start=1):
+        if (not numeric[i - 1] or counts) and len(set(texts)) > 1:
+            moved = next(t for t in texts[1:] if t != texts[0])
+            out.text_differences.append((str(rel), i, col, texts[0], moved))
+    if counts or not any(numeric):
+        return
+    values = np.array(
+        [
+            [_number(texts[k]) for texts, n in zip(rows, numeric, strict=True) if n]
+            for k in range(len(cells))
+        ],
+        dtype=float,
+    )
+    try:
+        spec = column_spec(values, cap)
+    except AbglibValueError as exc:
+        out.problems.append(f"{rel}, column {col}: {exc}")
+        return
+    with np.errstate(invalid="ignore"):
+        diff = np.where(values[1:] == values[0], 0.0, np.abs(values[1:] - values[0]))
+    out.columns.append(
+        ColumnPrecision(
+            key,
+            col,
+            spec,
+            values.shape[1],
+            _roundoff_cells(values, spec),
+            float(np.nan_to_num(diff, nan=0.0).max()) if diff.size else 0.0,
+        )
+    )
 
 
 def _roundoff_cells(values: np.ndarray, spec) -> int:
