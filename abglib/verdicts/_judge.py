@@ -269,6 +269,12 @@ def _chance(c: float) -> float:
     return float(f"{c:.3g}")
 
 
+#: significant digits of a reading's value in a note: enough to see it meet the printed
+#: number, few enough to hold on any machine (a value from a root finder or an optimiser
+#: holds to ~6 digits, and a note is compared letter for letter by ``abglib verify``)
+NOTE_DIGITS = 4
+
+
 def _unexplained(abs_err, tol) -> str:
     return (
         f"not explained: differs by {format_number(abs_err, 3)} "
@@ -281,7 +287,8 @@ def _explained_note(hit, explanation: Explanation) -> str:
     what = c.detail or c.label
     where = f"; see report section '{c.section}'" if c.section else ""
     return (
-        f"reading {c.label} ({what}) gives {format_number(c.value, 6)}, which matches the "
+        f"reading {c.label} ({what}) gives {format_number(c.value, NOTE_DIGITS)}, which "
+        "matches the "
         f"printed value at chance {format_number(_chance(hit.chance))} (budget "
         f"{format_number(_chance(hit.budget))}){where}; families tried: "
         f"{explanation.tried_text()}"
@@ -295,7 +302,7 @@ def _tried_note(explanation: Explanation) -> str:
         h = near[0]
         text += (
             f"; {h.candidate.label} ({h.candidate.detail or h.candidate.label}) gives "
-            f"{format_number(h.candidate.value, 6)} but at chance "
+            f"{format_number(h.candidate.value, NOTE_DIGITS)} but at chance "
             f"{format_number(_chance(h.chance))} > budget {format_number(_chance(h.budget))}"
         )
     return text

@@ -569,7 +569,7 @@ def _summary(s: SteelmanStudy) -> Result:
     return Result(
         None,
         "'useful' is a judgement, not a number; their accuracy on the table alphas: eq 50 exact "
-        f"(relative difference {_f(float(eq50), 2)}), eq 53 within "
+        f"(relative difference {roundoff(float(eq50))}), eq 53 within "
         f"{t['eq53_rel_err'].max():.1%} of the exact -3 dB ωT, eq 55 within "
         f"{t['eq55_rel_err'].max():.1%} of the exact overshoot; see '{SEC_T345}' and '{SEC_TEXT}'",
     )
