@@ -268,6 +268,8 @@ def test_read_table_reads_bounds_as_zero(tmp_path):
     write_csv(with_precision(df, d="<1e-12"), tmp_path / "t.csv")
     back = read_table(tmp_path / "t.csv")
     assert back["d"].tolist() == [0.25, 0.0] and back["name"].tolist() == ["a", "b"]
+    # asked for text, every cell as written (a comparison table's columns are read so)
+    assert read_table(tmp_path / "t.csv", dtype=str)["d"].tolist() == ["0.25", "<1e-12"]
 
 
 def _pandas_route(df, digits=10, precision=None):

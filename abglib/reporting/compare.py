@@ -163,10 +163,13 @@ def with_precision(df: pd.DataFrame, **columns) -> pd.DataFrame:
 
 
 def read_table(path, **kwargs) -> pd.DataFrame:
-    """Read a table written by :func:`write_csv` for display: a column of numbers whose
-    round-off cells are written as a bound (``<1e-12``) is read as numbers, each bound as
-    0.0 (zero within round-off), so that the notebooks can format it."""
+    """Read a table written by :func:`write_csv` for display or further computing: a
+    column of numbers whose round-off cells are written as a bound (``<1e-12``) is read as
+    numbers, each bound as 0.0 (zero within round-off), so that the notebooks and figure
+    scripts can format and plot it; with ``dtype=str`` every cell stays as written."""
     df = pd.read_csv(path, **kwargs)
+    if kwargs.get("dtype") is str:  # the caller asked for the text as written
+        return df
     for col in df.columns:
         if not (df[col].dtype == object or pd.api.types.is_string_dtype(df[col])):
             continue

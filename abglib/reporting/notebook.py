@@ -110,13 +110,17 @@ class Report:
 
     # -- reading ------------------------------------------------------------------------
     def read(self, key: str, reader=None, **kwargs) -> pd.DataFrame:
-        """Read ``tables[key]`` with ``reader`` (default ``pandas.read_csv``) and tag it
-        with its source (``df.attrs["source"]``, kept by pandas through most operations)."""
+        """Read ``tables[key]`` with ``reader`` (default
+        :func:`~abglib.reporting.compare.read_table`: a round-off bound such as ``<1e-11``
+        read as 0.0 in a column of numbers) and tag it with its source
+        (``df.attrs["source"]``, kept by pandas through most operations)."""
         if key not in self.tables:
             raise KeyError(
                 f"table {key!r} is not an input of this report; have {sorted(self.tables)}"
             )
-        df = (reader or pd.read_csv)(self.tables[key], **kwargs)
+        from .compare import read_table
+
+        df = (reader or read_table)(self.tables[key], **kwargs)
         df.attrs["source"] = key
         return df
 

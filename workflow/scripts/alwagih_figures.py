@@ -1,7 +1,6 @@
 """Draw seed 001's Figures 5-8 (and the causal-M5 comparison) from the study's tables."""
 
-import pandas as pd
-
+from abglib.reporting.compare import read_table
 from abglib.reporting.pipeline import log_to
 
 
@@ -14,8 +13,8 @@ def main(input, output, params) -> None:
     from abglib.replications.alwagih.printed import PAPER_METHODS as PAPER
     from abglib.reporting.plotting import save_figure
 
-    tracks = pd.read_csv(input.tracks)
-    summary = pd.read_csv(input.mc_rmse)
+    tracks = read_table(input.tracks)
+    summary = read_table(input.mc_rmse)
     for noise, out, num in (("white", output.fig5, 5), ("coloured", output.fig6, 6)):
         d = tracks[tracks["noise"] == noise]
         e = int(d["experiment"].iloc[0])
@@ -32,13 +31,13 @@ def main(input, output, params) -> None:
     ):
         fig = alwagih_rmse_bars(
             summary[summary["noise"] == noise],
-            pd.read_csv(table),
+            read_table(table),
             PAPER,
             f"Figure {num} (reconstruction): RMSE of the 5 methods, {noise} noise",
         )
         save_figure(fig, out, dpi=params.dpi)
     fig = alwagih_causal(
-        pd.read_csv(input.causal),
+        read_table(input.causal),
         "Beyond seed 001: M5 vs its causal variant, the best of M1-M4 and Kalman α-β designs",
     )
     save_figure(fig, output.causal, dpi=params.dpi)

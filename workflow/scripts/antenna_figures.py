@@ -1,7 +1,6 @@
 """Draw the tracking-antenna figures (seed 004) from the tables of rule antenna_reproduce."""
 
-import pandas as pd
-
+from abglib.reporting.compare import read_table
 from abglib.reporting.pipeline import log_to
 
 
@@ -9,7 +8,7 @@ def main(input, output, params) -> None:
     from abglib.replications.antenna.figures import antenna_figure
     from abglib.reporting.plotting import save_figure
 
-    tables = {k: pd.read_csv(v) for k, v in input.items()}
+    tables = {k: read_table(v) for k, v in input.items()}
     for name, path in output.items():
         save_figure(antenna_figure(name, tables), path, dpi=params.dpi)
 

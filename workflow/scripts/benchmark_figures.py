@@ -1,7 +1,6 @@
 """Heatmap of the benchmark matrix and the noise-versus-lag trade-off per design family."""
 
-import pandas as pd
-
+from abglib.reporting.compare import read_table
 from abglib.reporting.pipeline import log_to
 
 
@@ -9,10 +8,10 @@ def main(input, output, params) -> None:
     from abglib.bench.figures import benchmark_heatmap, tradeoff_figure
     from abglib.reporting.plotting import save_figure
 
-    league = pd.read_csv(input.league)
+    league = read_table(input.league)
     save_figure(benchmark_heatmap(league, params.rank_by), output.heatmap, dpi=params.dpi)
-    points = pd.read_csv(input.tradeoff)
-    curves = pd.read_csv(input.curves)
+    points = read_table(input.tradeoff)
+    curves = read_table(input.curves)
     fig = tradeoff_figure(curves, points, params.tradeoff_scenarios)
     save_figure(fig, output.tradeoff, dpi=params.dpi)
 

@@ -2,6 +2,7 @@
 
 import pandas as pd
 
+from abglib.reporting.compare import read_table
 from abglib.reporting.pipeline import log_to
 
 
@@ -17,7 +18,7 @@ def main(input, output, params) -> None:
     from abglib.bench.metrics import fail_threshold
     from abglib.reporting.compare import write_csv
 
-    cells = [pd.read_csv(p) for p in input.cells]
+    cells = [read_table(p) for p in input.cells]
     runs = min(int(c["runs"].iloc[0]) for c in cells)
     threshold = fail_threshold(runs, int(params.family_size), float(params.family_alpha))
     d = params.digits

@@ -1,7 +1,6 @@
 """Draw the FAA Bendix report's figures (seed 003) from the tables of its reproduce rule."""
 
-import pandas as pd
-
+from abglib.reporting.compare import read_table
 from abglib.reporting.pipeline import log_to
 
 
@@ -10,9 +9,9 @@ def main(input, output, params) -> None:
     from abglib.reporting.plotting import save_figure
 
     figs = draw_all(
-        pd.read_csv(input.responses),
-        pd.read_csv(input.damping_lags),
-        pd.read_csv(input.captions),
+        read_table(input.responses),
+        read_table(input.damping_lags),
+        read_table(input.captions),
     )
     for name, fig in figs.items():
         save_figure(fig, getattr(output, name), dpi=params.dpi)

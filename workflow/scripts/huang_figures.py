@@ -1,7 +1,6 @@
 """Draw the Huang et al. report's figures (seed 002, Figs 2-7) from the study's tables."""
 
-import pandas as pd
-
+from abglib.reporting.compare import read_table
 from abglib.reporting.pipeline import log_to
 
 
@@ -11,7 +10,7 @@ def main(input, output, params) -> None:
     from abglib.reporting.plotting import save_figure
 
     names = ("bandwidth_curves", "tables12", "thermal", "track", "track_metrics")
-    tables = {n: pd.read_csv(input[n]) for n in names}
+    tables = {n: read_table(input[n]) for n in names}
     figures = huang_figures(tables, read_published(input.published), params.cfg)
     for name, fig in figures.items():
         save_figure(fig, output[name], dpi=params.dpi)

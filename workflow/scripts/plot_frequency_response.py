@@ -1,7 +1,6 @@
 """Draw one frequency-response figure of seed 000 (Figs. 1-6) from its response table."""
 
-import pandas as pd
-
+from abglib.reporting.compare import read_table
 from abglib.reporting.pipeline import log_to
 
 
@@ -9,7 +8,7 @@ def main(input, output, params) -> None:
     from abglib.replications.steelman1978.figures import draw
     from abglib.reporting.plotting import save_figure
 
-    fig = draw(pd.read_csv(input.data), params.axes, params.caption)
+    fig = draw(read_table(input.data), params.axes, params.caption)
     save_figure(fig, output.png, dpi=params.dpi)
 
 
