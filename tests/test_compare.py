@@ -270,6 +270,7 @@ def test_read_table_reads_bounds_as_zero(tmp_path):
     assert back["d"].tolist() == [0.25, 0.0] and back["name"].tolist() == ["a", "b"]
     # asked for text, every cell as written (a comparison table's columns are read so)
     assert read_table(tmp_path / "t.csv", dtype=str)["d"].tolist() == ["0.25", "<1e-12"]
+    assert read_table(tmp_path / "t.csv", dtype={"d": str})["d"].tolist() == ["0.25", "<1e-12"]
 
 
 def _pandas_route(df, digits=10, precision=None):

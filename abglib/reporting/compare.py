@@ -166,11 +166,16 @@ def read_table(path, **kwargs) -> pd.DataFrame:
     """Read a table written by :func:`write_csv` for display or further computing: a
     column of numbers whose round-off cells are written as a bound (``<1e-12``) is read as
     numbers, each bound as 0.0 (zero within round-off), so that the notebooks and figure
-    scripts can format and plot it; with ``dtype=str`` every cell stays as written."""
+    scripts can format and plot it; a column asked for as ``str`` (``dtype=str`` or
+    ``dtype={col: str}``) stays as written."""
     df = pd.read_csv(path, **kwargs)
-    if kwargs.get("dtype") is str:  # the caller asked for the text as written
+    asked = kwargs.get("dtype")
+    if asked is str:  # the caller asked for the text as written
         return df
+    as_text = {c for c, t in asked.items() if t is str} if isinstance(asked, dict) else set()
     for col in df.columns:
+        if col in as_text:
+            continue
         if not (df[col].dtype == object or pd.api.types.is_string_dtype(df[col])):
             continue
         text = df[col].dropna().astype(str)
