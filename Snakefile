@@ -6,6 +6,7 @@ configfile: "config.yaml"
 
 
 include: "workflow/rules/common.smk"
+include: "workflow/rules/documents.smk"
 include: "workflow/rules/steelman1978.smk"
 include: "workflow/rules/faa_bendix.smk"
 include: "workflow/rules/huang.smk"

@@ -36,15 +36,6 @@ VERSION = abglib.__version__
 REPORTS = f"results/reports/v{VERSION}"
 DOCS = config["docs"]
 
-# titles of the source documents (shared/seeds/README.md), for the index page
-DOC_TITLES = {
-    "steelman1978": "J. E. Steelman, Frequency Response of α-β-γ Trackers (WSMR, 1978)",
-    "alwagih": "Al-Wagih and Abdulla, A Study of αβ Tracker ...",
-    "huang": "Huang, Yang and Ma, Research on Fixed-gain Range Tracking Loop",
-    "faa_bendix": "Elwell (FAA), Bendix Alpha-Beta Tracking Filter Test",
-    "antenna": "LQ preview control and Kalman estimation for a radar tracking antenna",
-}
-
 # published numbers are part of the repository, found from the Snakefile's folder so that
 # the pipeline can run in any working directory (snakemake -d)
 REPO = workflow.basedir
@@ -150,92 +141,7 @@ def run_script(input, output, params, wildcards, threads, resources, log, rulena
     )
 
 
-# per document: figure stems and table stems a report shows and copies beside itself
-REPORT_CONTENT = {
-    "steelman1978": {
-        "figures": sorted(config["steelman1978"]["figures"]),
-        "tables": [
-            "comparison",
-            "robustness",
-            "gains",
-            "design_example",
-            "tables345",
-            "approximations",
-            "equations",
-            "stability",
-        ],
-    },
-    "faa_bendix": {
-        "figures": ["impulse", "ramp", "triangle"],
-        "tables": [
-            "comparison",
-            "gains",
-            "memo_table",
-            "rounding",
-            "row7",
-            "damping_lags",
-            "responses",
-            "captions",
-            "robustness",
-        ],
-    },
-    "huang": {
-        "figures": ["fig2", "fig3", "fig4", "fig5", "fig6", "fig7"],
-        "tables": [
-            "comparison",
-            "robustness",
-            "tables12",
-            "enbw_routes",
-            "track_metrics",
-            "bandwidth_curves",
-            "thermal",
-        ],
-    },
-    "alwagih": {
-        "figures": ["fig5_tracks", "fig6_tracks", "fig7_rmse", "fig8_rmse", "causal"],
-        "tables": [
-            "comparison",
-            "table1",
-            "table2",
-            "mc_rmse",
-            "tables34",
-            "ttests",
-            "tables56",
-            "consistency",
-            "causal",
-            "sensitivity",
-            "m5_bank",
-            "experiments",
-            "settings",
-            "robustness",
-        ],
-    },
-    "antenna": {
-        "figures": [
-            "taylor",
-            "tracking",
-            "omega_sweep",
-            "kalman_vw",
-            "kalman_sweep",
-            "amplitude",
-            "robustness",
-            "abg",
-        ],
-        "tables": [
-            "comparison",
-            "parameters",
-            "checks",
-            "vw_search",
-            "stability",
-            "abg",
-            "omega_sweep",
-            "kalman_sweep",
-            "design_errors",
-            "taylor",
-            "robustness",
-        ],
-    },
-}
+# per document: its title, tables and figures (DOCUMENTS, REPORT_CONTENT): documents.smk
 
 
 def published_tables_of(doc):
@@ -289,8 +195,14 @@ def all_targets():
 def doc_config(doc, *extra):
     """What a document's study reads: its own config section and the ``extra`` top-level
     sections, as one mapping (a rule param, so that a change to them reruns the rule).
+    A document's section is ``config[doc]``, or ``config["documents"][doc]`` for a
+    document added beside the five (docs/new-document.md); the study sees it as
+    ``config[doc]`` either way.
     """
-    return {k: config[k] for k in (doc, *extra) if k in config}
+    out = {k: config[k] for k in (doc, *extra) if k in config}
+    if doc not in out and doc in config.get("documents", {}):
+        out = {doc: config["documents"][doc], **out}
+    return out
 
 
 def claims_outputs(doc):
