@@ -1,4 +1,5 @@
-"""Sphinx configuration of abglib's API reference and gallery (``docs/README.md``).
+"""Sphinx configuration of abglib's site: the API reference, the gallery, the guides
+(``docs/*.md``, read by MyST) and the current release's reports (``docs/README.md``).
 
 Build, offline, warnings as errors::
 
@@ -38,15 +39,60 @@ extensions = [
     "numpydoc",
     "sphinx_gallery.gen_gallery",
     "abglib_mathml",
+    # the guides (docs/*.md) and the findings notes are Markdown: MyST reads them, and a
+    # link to another page's .md file (as on GitHub) becomes a link to its page here
+    "myst_parser",
 ]
 
 root_doc = "index"
 templates_path = ["_templates"]
-# The topic pages (docs/*.md: architecture, performance, releases, ...) and the findings
-# notes stay Markdown files read in the repository: the site is the API reference, the
-# gallery and the release's reports. (Sphinx reads only .rst: a new .md page cannot break
-# the -W build, and docs/readme_findings.md stays what `abglib findings` reads.)
-exclude_patterns = ["_build", "**/GALLERY_HEADER.rst", "examples/*.py"]
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+#: Markdown files of docs/ that are not pages: the README findings block's template
+#: (`abglib findings` reads it; its placeholders are not prose)
+NOT_PAGES = ["readme_findings.md"]
+exclude_patterns = ["_build", "**/GALLERY_HEADER.rst", "examples/*.py", *NOT_PAGES]
+
+# -- guides: docs/*.md, read by MyST -----------------------------------------------------
+#: The guides in reading order. Every other docs/*.md page follows them alphabetically, so
+#: a new page is in the site (and its navigation) without an edit here; a page in no
+#: toctree would fail the -W build.
+GUIDES = [
+    "overview",
+    "installation",
+    "reading-reports",
+    "extending",
+    "new-document",
+    "releases",
+    "performance",
+    "engine-speed",
+    "cluster",
+    "testing",
+    "architecture",
+    "README",
+]
+#: the line of index.rst that _guides_toctree replaces with the guides' toctree
+GUIDES_MARKER = ".. guides: the toctree of docs/*.md, written here by conf.py (GUIDES)"
+# GitHub's anchors for headings down to ###, so that "page.md#a-heading" links work in
+# both places
+myst_heading_anchors = 3
+
+
+def guide_pages() -> list[str]:
+    """The guides' document names (``docs/*.md`` but NOT_PAGES), in GUIDES order."""
+    found = {p.stem for p in DOCS.glob("*.md") if p.name not in NOT_PAGES}
+    return [g for g in GUIDES if g in found] + sorted(found - set(GUIDES))
+
+
+def _guides_toctree(app, docname, source):
+    """Write the guides' toctree into the front page, at GUIDES_MARKER."""
+    if docname != root_doc:
+        return
+    if GUIDES_MARKER not in source[0]:
+        raise ValueError(f"{root_doc}.rst lost the line {GUIDES_MARKER!r} (conf.py fills it)")
+    entries = "".join(f"   {page}\n" for page in guide_pages())
+    toctree = f".. toctree::\n   :caption: Guides\n   :maxdepth: 1\n   :hidden:\n\n{entries}"
+    source[0] = source[0].replace(GUIDES_MARKER, toctree)
+
 
 # -- API reference: autosummary pages, numpydoc docstrings ------------------------------
 autosummary_generate = True
@@ -146,4 +192,5 @@ def _copy_reports(app, exception):
 
 
 def setup(app):
+    app.connect("source-read", _guides_toctree)
     app.connect("build-finished", _copy_reports)
