@@ -196,7 +196,14 @@ def _cell_fragments(nb) -> tuple[str, str, list[str]]:
             elif "text/html" in data:
                 frags.append(data["text/html"])
             elif "text/markdown" in data:
-                frags.append(markdown_html(data["text/markdown"]))
+                frag = markdown_html(data["text/markdown"])
+                # a title the notebook computes (the generic report of a document,
+                # workflow/notebooks/document.py) is the first heading it displays
+                m = None if title else re.search(r"<h1[^>]*>(.*?)</h1>", frag, re.S)
+                if m:
+                    title = m.group(1)
+                    frag = frag.replace(m.group(0), "", 1)
+                frags.append(frag)
             elif "image/png" in data:
                 frags.append(f'<img src="data:image/png;base64,{data["image/png"]}" alt="">')
             elif "text/plain" in data:
