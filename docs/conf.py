@@ -102,7 +102,7 @@ autodoc_default_options = {"member-order": "bysource"}
 autodoc_typehints = "none"  # the numpydoc Parameters sections say the types
 #: the modules of api.rst: an object is documented once, on the page of its home (the
 #: deepest of these modules that holds the module it is defined in); other modules that
-#: re-export it (``abglib.reporting.compare`` re-exports the verdict engine's names) link it
+#: re-export it (``abglib.analysis`` re-exports its submodules' names) link it
 API_MODULES = [
     line.strip()
     for line in (DOCS / "api.rst").read_text().splitlines()

@@ -131,8 +131,8 @@ def test_stable_interval_edges_are_where_the_radius_crosses():
 def test_wrap_phase_writes_both_sides_of_the_cut_alike():
     """A phase at the branch cut (pi - 1e-9 on one BLAS kernel, -pi + 1e-9 on another, as
     measured for the known-output case at Q/R = 10^4) is written the same."""
+    from abglib.common.tables import format_cell
     from abglib.replications.antenna.study_exact import PHASE_DIGITS, wrap_phase
-    from abglib.reporting.compare import format_cell
 
     for eps in (0.0, 1e-12, 1e-9, 4e-5):
         a = format_cell(wrap_phase(np.pi - eps), PHASE_DIGITS)
@@ -146,8 +146,8 @@ def test_wrap_phase_writes_both_sides_of_the_cut_alike():
 def test_omega_sweep_precision_and_roundoff_phase():
     """e_max is declared to hold 4 digits above its absolute round-off; below it e_max is
     written as the bound and its phase (undefined) is left empty."""
+    from abglib.common.tables import format_table
     from abglib.replications.antenna.study_exact import E_ROUNDOFF, omega_sweep_table
-    from abglib.reporting.compare import format_table
 
     ctrl = design_controller(NOMINAL, DT, 1e4, 1.0)
     d = omega_sweep_table({1e4: ctrl}, 1.0, {"start": 0.003, "stop": 1.0, "n": 3, "orders": [5]})
@@ -162,8 +162,8 @@ def test_omega_sweep_precision_and_roundoff_phase():
 
 
 def test_checks_roundoff_written_as_bound():
+    from abglib.common.tables import format_table
     from abglib.replications.antenna.study_exact import checks_table
-    from abglib.reporting.compare import format_table
 
     ctrl = design_controller(NOMINAL, DT, 100.0, 1.0)
     d = checks_table(ctrl, 100.0, 1.0, 1e-3 * np.eye(2))
@@ -182,8 +182,8 @@ def test_roundoff_notes_print_a_bound():
 
 def test_tracking_table_precision():
     """y and e of the time series hold 5 digits above an absolute round-off of 1e-10."""
+    from abglib.common.tables import format_table
     from abglib.replications.antenna.study_exact import TRACK_PRECISION, tracking_table
-    from abglib.reporting.compare import format_table
 
     ctrl = design_controller(NOMINAL, DT, 100.0, 1.0)
     d = tracking_table(NOMINAL, ctrl, 10.0, 0.1, {"duration": 20.0, "orders": [2]})

@@ -1,4 +1,4 @@
-"""Published-versus-reproduced logic (abglib.reporting.compare; shared/CONTRACTS.md §3)."""
+"""Published-versus-reproduced logic (abglib.replications.compare; shared/CONTRACTS.md §3)."""
 
 import numpy as np
 import pandas as pd
@@ -7,20 +7,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from abglib import AbglibValueError
-from abglib.reporting.compare import (
+from abglib.common.tables import csv_text, format_table, with_precision, write_csv
+from abglib.replications.compare import (
     COMPARISON_COLUMNS,
-    Alternative,
     build_comparison,
-    csv_text,
-    format_number,
-    format_table,
     read_published,
     scorecard,
-    tolerance_from_printed,
-    verdict,
-    with_precision,
-    write_csv,
 )
+from abglib.verdicts import Alternative, format_number, tolerance_from_printed, verdict
 
 
 # printed strings of seed 000 (Steelman 1978) and the half unit of their last digit
@@ -213,7 +207,7 @@ def test_read_published_keeps_printed_strings_and_checks(tmp_path):
 
 
 def test_non_matches_keeps_only_rows_to_judge():
-    from abglib.reporting.compare import non_matches
+    from abglib.replications.compare import non_matches
 
     comp = pd.DataFrame(
         {
@@ -244,7 +238,7 @@ def test_non_matches_keeps_only_rows_to_judge():
     ],
 )
 def test_format_cell_at_the_declared_precision(x, spec, text):
-    from abglib.reporting.compare import format_cell
+    from abglib.common.tables import format_cell
 
     assert format_cell(x, spec) == text
 
@@ -262,7 +256,7 @@ def test_write_csv_uses_the_tables_declared_precision(tmp_path):
 
 
 def test_read_table_reads_bounds_as_zero(tmp_path):
-    from abglib.reporting.compare import read_table
+    from abglib.common.tables import read_table
 
     df = pd.DataFrame({"name": ["a", "b"], "d": [0.25, 3e-16], "n": [1.5, 2.5]})
     write_csv(with_precision(df, d="<1e-12"), tmp_path / "t.csv")

@@ -591,7 +591,7 @@ def test_cut_off_sees_a_left_title_and_a_suptitle_beyond_the_edge():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from abglib.reporting.plotting import cut_off
+    from abglib.common.plotting import cut_off
 
     fig, ax = plt.subplots(figsize=(2, 2))
     ax.set_title("a left title far too long for a figure this narrow " * 2, loc="left")

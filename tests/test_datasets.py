@@ -468,7 +468,7 @@ def test_a_failed_script_says_why_on_the_console(tmp_path):
 
     log = tmp_path / "job.log"
     code = (
-        "from abglib.reporting.pipeline import log_to\n"
+        "from abglib.common.jobs import log_to\n"
         f"log_to({str(log)!r})\n"
         "raise ValueError('rebuild with snakemake -c2 --forcerun x')\n"
     )

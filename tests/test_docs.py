@@ -163,7 +163,7 @@ def test_every_public_name_has_its_api_page(site):
         "abglib",
         "abglib.analysis",
         "abglib.verdicts",
-        "abglib.reporting.compare",
+        "abglib.replications.compare",
         "abglib.reporting.verify",
         "abglib.bench.variants",
     } <= set(modules)

@@ -15,7 +15,7 @@ import pandas as pd
 import pytest
 import yaml
 
-from abglib.reporting.plotting import (
+from abglib.common.plotting import (
     cut_off,
     description,
     legend_overlaps,
@@ -60,8 +60,8 @@ def _huang_track(metrics):
 
 
 def _huang():
+    from abglib.replications.compare import read_published
     from abglib.replications.huang.figures import huang_figures
-    from abglib.reporting.compare import read_published
 
     tables = {
         n: _table("huang", n) for n in ("bandwidth_curves", "tables12", "thermal", "track_metrics")

@@ -17,8 +17,8 @@ import pytest
 
 import abglib
 from abglib._perturb import ENV as PERTURB
+from abglib.replications.compare import COMPARISON_COLUMNS, SCORECARD_COLUMNS, VERDICTS
 from abglib.reporting import precision
-from abglib.reporting.compare import COMPARISON_COLUMNS, SCORECARD_COLUMNS, VERDICTS
 
 from .conftest import require
 

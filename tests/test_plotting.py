@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from abglib.reporting import plotting as P
-from abglib.reporting.plotting import (
+from abglib.common import plotting as P
+from abglib.common.plotting import (
     FAMILY_COLOURS,
     cut_off,
     describe,

@@ -1,5 +1,6 @@
 """Perturbed arithmetic (abglib._perturb) and the precision derived from it
-(abglib.reporting.precision): every spec checked against values made by hand."""
+(abglib.reporting.precision; the lookup, abglib.common.tables): every spec checked against
+values made by hand."""
 
 import numpy as np
 import pandas as pd
@@ -8,8 +9,9 @@ import pytest
 import abglib
 from abglib._checks import AbglibValueError
 from abglib._perturb import ENV, RELATIVE, perturb, perturbation_seed
+from abglib.common import tables
+from abglib.common.tables import csv_text, format_cell
 from abglib.reporting import precision as prec
-from abglib.reporting.compare import csv_text, format_cell
 from abglib.reporting.verify import cell_agrees
 
 
@@ -113,32 +115,32 @@ def test_written_numbers_verify_against_the_perturbed_ones():
 
 
 def test_stricter_and_merge():
-    assert prec.stricter(6, 4) == 4
-    assert prec.stricter("<1e-12", 5) == "<1e-12:5"
-    assert prec.stricter("<1e-12:8", "<1e-10:9") == "<1e-10:8"
-    assert prec.stricter(None, "<1e-12") == "<1e-12"
-    merged = prec.merge_specs({"a/t": {"x": 7}}, {"a/t": {"x": "<1e-13:9", "y": 4}})
+    assert tables.stricter(6, 4) == 4
+    assert tables.stricter("<1e-12", 5) == "<1e-12:5"
+    assert tables.stricter("<1e-12:8", "<1e-10:9") == "<1e-10:8"
+    assert tables.stricter(None, "<1e-12") == "<1e-12"
+    merged = tables.merge_specs({"a/t": {"x": 7}}, {"a/t": {"x": "<1e-13:9", "y": 4}})
     assert merged == {"a/t": {"x": "<1e-13:7", "y": 4}}
     with pytest.raises(AbglibValueError, match="must start with '<'"):
-        prec.stricter("1e-12", 3)
+        tables.stricter("1e-12", 3)
 
 
 def test_precision_for_merges_declared_and_derived(monkeypatch):
-    monkeypatch.setattr(prec, "_derived", lambda: {"doc/t": {"x": 6, "y": "<1e-12:12"}})
+    monkeypatch.setattr(tables, "_derived", lambda: {"doc/t": {"x": 6, "y": "<1e-12:12"}})
     df = pd.DataFrame({"x": [1.0], "y": [2.0], "z": [3.0]})
     df.attrs["precision"] = {"z": 4, "x": 8}
-    digits, spec = prec.precision_for(df, "results/doc/t.csv", 10)
+    digits, spec = tables.precision_for(df, "results/doc/t.csv", 10)
     assert digits == 10 and spec == {"x": 6, "y": "<1e-12:10", "z": 4}
-    monkeypatch.setenv(prec.RAW_ENV, "1")
-    assert prec.precision_for(df, "results/doc/t.csv", 10) == (prec.RAW_DIGITS, {})
-    monkeypatch.setenv(prec.RAW_ENV, "yes")
+    monkeypatch.setenv(tables.RAW_ENV, "1")
+    assert tables.precision_for(df, "results/doc/t.csv", 10) == (tables.RAW_DIGITS, {})
+    monkeypatch.setenv(tables.RAW_ENV, "yes")
     with pytest.raises(AbglibValueError, match="must be 0 or 1"):
-        prec.precision_for(df, "results/doc/t.csv", 10)
+        tables.precision_for(df, "results/doc/t.csv", 10)
 
 
 def test_raw_table_round_trips_every_float(monkeypatch):
     x = np.array([0.1 + 0.2, 1 / 3, 2.0**-40])
-    text = csv_text(pd.DataFrame({"x": x}), prec.RAW_DIGITS)
+    text = csv_text(pd.DataFrame({"x": x}), tables.RAW_DIGITS)
     assert [float(v) for v in text.split()[1:]] == list(x)
 
 
@@ -159,18 +161,18 @@ def test_derive_folders_finds_specs_and_moved_text(tmp_path):
 
 def test_the_generated_table_names_real_columns():
     """Every spec of the committed table parses (a hand edit that breaks one fails here)."""
-    from abglib.reporting._precision_table import PRECISION
+    from abglib.common._precision_table import PRECISION
 
     for key, cols in PRECISION.items():
         assert key.count("/") == 1, key
         for spec in cols.values():
-            prec.stricter(spec, spec)  # raises on a malformed spec
+            tables.stricter(spec, spec)  # raises on a malformed spec
 
 
 def test_table_keys():
-    assert prec.table_key("results/alwagih/table1.csv") == "alwagih/table1"
-    assert prec.table_key("/x/results/benchmark/cells/std_ab/alwagih_w1.csv") == "benchmark/cells"
-    assert prec.table_key("results/benchmark/cells.csv") == "benchmark/cells"
+    assert tables.table_key("results/alwagih/table1.csv") == "alwagih/table1"
+    assert tables.table_key("/x/results/benchmark/cells/std_ab/alwagih_w1.csv") == "benchmark/cells"
+    assert tables.table_key("results/benchmark/cells.csv") == "benchmark/cells"
 
 
 def test_derive_folders_mixed_columns_and_counts(tmp_path):

@@ -9,14 +9,14 @@ import pytest
 
 import abglib
 from abglib import AbglibValueError
+from abglib.common.files import atomic_output, config_hash
+from abglib.replications.steelman1978.study import wt_grid
 from abglib.reporting import provenance
 from abglib.reporting.cli import main
 from abglib.reporting.page import markdown_html
-from abglib.reporting.pipeline import atomic_output, wt_grid
 from abglib.reporting.provenance import (
     SAME_IN_A_RELEASE,
     collect,
-    config_hash,
     find_seeds,
     git_commit,
     release_pages,

@@ -10,6 +10,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from abglib.common.pngmeta import png_description
 from abglib.reporting.notebook import Report
 from abglib.reporting.page import (
     build_page,
@@ -20,7 +21,6 @@ from abglib.reporting.page import (
     read_headline,
     verdict_bar,
 )
-from abglib.reporting.pngmeta import png_description
 from abglib.reporting.render import verdict_counts, write_assets
 from abglib.reporting.tables import cell_strings, group_runs, section_of, table_html
 

@@ -154,7 +154,7 @@ def test_alwagih_methods_registered_when_present():
 
 def test_figure_curve_specs_use_the_variant_rules():
     from abglib import design
-    from abglib.reporting.pipeline import gains_from_spec
+    from abglib.bench.variants import gains_from_spec
 
     assert gains_from_spec({"design": "qd", "m": 21}) == design.qd(21.0)
     assert gains_from_spec({"design": "qd", "alpha": 0.3}) == design.qd(design.qd_m_from_alpha(0.3))

@@ -305,7 +305,7 @@ def test_changes_name_the_reading_that_changed_a_verdict(tmp_path):
 def test_non_matches_shows_the_reading_beside_the_verdict():
     import pandas as pd
 
-    from abglib.reporting.compare import non_matches
+    from abglib.replications.compare import non_matches
 
     comp = pd.DataFrame(
         {
@@ -326,7 +326,7 @@ def test_non_matches_shows_the_reading_beside_the_verdict():
 
 
 def test_read_published_accepts_an_optional_sentence_column(tmp_path):
-    from abglib.reporting.compare import read_published
+    from abglib.replications.compare import read_published
 
     head = "key,item,quantity,published,where"
     (tmp_path / "a.csv").write_text(f"{head},sentence\nk1,i,q,7,p,s1\nk2,i,q,40,p,s1\n")

@@ -7,12 +7,12 @@ import sys
 
 import pytest
 
-from abglib.reporting.pipeline import JobFailed
+from abglib.common.jobs import JobFailed
 from abglib.reporting.workers import run_script, script_object
 
 SCRIPT = """
 import json, os, sys
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
 
 log_to(snakemake.log[0])
 print("to the log", file=sys.stderr)
@@ -141,7 +141,7 @@ def test_job_threads_sets_and_restores_the_calling_threads_count():
     import numba
 
     from abglib import AbglibValueError
-    from abglib.reporting.pipeline import job_threads
+    from abglib.common.jobs import job_threads
 
     before = numba.get_num_threads()
     with job_threads(1):
@@ -160,7 +160,7 @@ from abglib.reporting import workers
 if sys.argv[2] == "warm":
     workers.load_figures()
 import matplotlib.pyplot as plt
-from abglib.reporting.plotting import STYLE, describe, save_figure
+from abglib.common.plotting import STYLE, describe, save_figure
 assert plt.get_fignums() == []  # the warm-up leaves no figure open
 with plt.rc_context(STYLE):
     fig, ax = plt.subplots()

@@ -1,7 +1,7 @@
 """matplotlib: the title artists of an Axes, through public API, checked.
 
 For matplotlib's maintainers, what abglib needs and which public API would replace it:
-:func:`abglib.reporting.plotting.cut_off` checks that no title, label or legend of a
+:func:`abglib.common.plotting.cut_off` checks that no title, label or legend of a
 figure reaches beyond its edge, so it needs the ``Text`` artists of an Axes' three
 titles (center, left, right). ``Axes.title`` is the center one; the left and right ones
 are only the private ``Axes._left_title`` and ``Axes._right_title``, and

@@ -39,10 +39,10 @@ def cell_job(
 
     ``settings`` holds ``runs, burn_in, init, ci_level, chunk_runs, family_size,
     family_alpha`` (``config['benchmark']``). ``threads``: the job's cores (the rule's
-    ``threads:``), which its tracking keeps to (:func:`abglib.reporting.pipeline.job_threads`).
+    ``threads:``), which its tracking keeps to (:func:`abglib.common.jobs.job_threads`).
     """
-    from ..reporting.compare import write_csv
-    from ..reporting.pipeline import job_log, job_threads
+    from ..common.jobs import job_log, job_threads
+    from ..common.tables import write_csv
     from .benchmark import cell_dataset, check_cell, run_cell
     from .metrics import fail_threshold
 

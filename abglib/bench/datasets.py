@@ -418,7 +418,7 @@ def generate(name: str, spec: Mapping, seed: int | None = None) -> Dataset:
         A missing, unknown or out-of-range setting, named by its key.
     """
     from .. import __version__
-    from ..reporting.provenance import config_hash
+    from ..common.files import config_hash
 
     if not isinstance(name, str) or not name:
         raise AbglibValueError(f"name must be a non-empty string, got {name!r}")
@@ -525,7 +525,7 @@ def write(dataset: Dataset, parquet_path, manifest_path) -> None:
     the same dataset always gives byte-identical files (no timestamps, no pandas
     metadata, fixed compression).
     """
-    from ..reporting.pipeline import atomic_output
+    from ..common.files import atomic_output
 
     _, pq = _arrow()
     table = _table(dataset)

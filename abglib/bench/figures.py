@@ -5,15 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..reporting.plotting import (
-    WIDTH,
-    describe,
-    family_colour,
-    legend_outside,
-    plt,
-    styled,
-    suptitle,
-)
+from ..common.plotting import WIDTH, describe, family_colour, legend_outside, plt, styled, suptitle
 
 __all__ = ["METRIC_NAMES", "benchmark_heatmap", "tradeoff_figure"]
 

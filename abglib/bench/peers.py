@@ -30,10 +30,10 @@ import scipy.stats
 from .. import design
 from ..analysis import frequency_response, steady_state_lag, transfer_function, vrf
 from ..analysis._statespace import state_space
+from ..common.tables import roundoff, with_precision
 from ..conventions import from_filterpy, to_filterpy
 from ..engine import track
 from ..gains import Gains
-from ..reporting.compare import roundoff, with_precision
 
 __all__ = ["GAIN_SETS", "agreement_table", "direct_vrf", "monte_carlo_vrf"]
 

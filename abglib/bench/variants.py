@@ -86,11 +86,13 @@ from .._checks import AbglibValueError
 from ..gains import Gains
 
 __all__ = [
+    "CURVE_DESIGNS",
     "RULES",
     "Rule",
     "callable_file",
     "check_variant",
     "describe_variant",
+    "gains_from_spec",
     "register",
     "resolve_callable",
     "variant_build",
@@ -391,6 +393,34 @@ def variant_gains(spec: Mapping, dt: float, n_samples: int | None = None, name: 
         return rule.build(params, dt, n_samples)
     except AbglibValueError as exc:
         raise AbglibValueError(f"variant {name!r} (rule {rule.name!r}): {exc}") from None
+
+
+#: Gain designs a config curve may name (seed 000: eqs 22-24, the alpha-beta analogue, 28-30).
+CURVE_DESIGNS = ("standard_abg", "standard_ab", "qd")
+
+
+def gains_from_spec(spec: Mapping) -> Gains:
+    """Gains of a config curve ``{design, alpha | m, ...}``.
+
+    ``standard_abg``: critically damped alpha-beta-gamma (seed 000, eqs 22-24) with the
+    given alpha; ``standard_ab``: critically damped alpha-beta (seed 000, p. 5);
+    ``qd``: QD tracker (seed 000, eqs 28-30) with memory ``m``, or the ``m`` that gives
+    the stated alpha.
+    """
+    kind = spec.get("design")
+    if kind not in CURVE_DESIGNS:
+        raise AbglibValueError(f"design must be one of {list(CURVE_DESIGNS)}, got {kind!r}")
+    # one dispatch from names to design rules: the variant registry's
+    if kind == "qd":
+        variant = (
+            {"rule": "qd_m", "m": spec["m"]}
+            if "m" in spec
+            else {"rule": "qd_alpha", "alpha": spec["alpha"]}
+        )
+    else:
+        order = 3 if kind == "standard_abg" else 2
+        variant = {"rule": "standard_alpha", "alpha": spec["alpha"], "order": order}
+    return variant_gains(variant, dt=1.0, name=f"curve {kind}")
 
 
 def variant_runner(spec: Mapping, dt: float, n_samples: int, name: str = "variant"):

@@ -1,7 +1,9 @@
 """The replications of the five source documents (extra ``abglib[replications]``).
 
 One folder per document (keys of ``shared/seeds/README.md``): its printed forms, its
-study, its claims (one shared claim model, :mod:`._claims`) and its figures' data.
+study, its claims (one shared claim model, :mod:`._claims`) and its figures' data; and
+:mod:`.compare`, the published-versus-reproduced table every document's claims make
+(``comparison.csv``, the scorecard: ``shared/CONTRACTS.md`` section 3).
 
 ``steelman1978``  seed 000, Steelman 1978
 ``alwagih``       seed 001, Al-Wagih and Abdulla
@@ -33,6 +35,7 @@ __all__ = [
     "Result",
     "Study",
     "claims_of",
+    "documents",
     "evaluate",
     "judge_claims",
     "one_blas_thread",
@@ -43,6 +46,21 @@ __all__ = [
 ]
 
 
+def documents() -> tuple[str, ...]:
+    """Every document key: :data:`DOCS`, then, sorted, every other folder of this package
+    with a ``study.py`` and a ``claims.py`` (a document added beside the five, as
+    ``docs/new-document.md`` describes)."""
+    from pathlib import Path
+
+    here = Path(__file__).parent
+    added = sorted(
+        p.name
+        for p in here.iterdir()
+        if p.name not in DOCS and (p / "study.py").is_file() and (p / "claims.py").is_file()
+    )
+    return (*DOCS, *added)
+
+
 def claims_of(doc: str):
     """``(CLAIMS, STUDY)`` of one document: its :class:`ClaimSet` and its study class
     (module ``abglib.replications.<doc>.claims``)."""
@@ -50,8 +68,8 @@ def claims_of(doc: str):
 
     from .._checks import AbglibValueError
 
-    if doc not in DOCS:
-        raise AbglibValueError(f"doc must be one of {list(DOCS)}, got {doc!r}")
+    if doc not in documents():
+        raise AbglibValueError(f"doc must be one of {list(documents())}, got {doc!r}")
     mod = importlib.import_module(f"{__name__}.{doc}.claims")
     return mod.CLAIMS, mod.STUDY
 
@@ -63,8 +81,8 @@ def study_of(doc: str):
 
     from .._checks import AbglibValueError
 
-    if doc not in DOCS:
-        raise AbglibValueError(f"doc must be one of {list(DOCS)}, got {doc!r}")
+    if doc not in documents():
+        raise AbglibValueError(f"doc must be one of {list(documents())}, got {doc!r}")
     mod = importlib.import_module(f"{__name__}.{doc}.study")
     found = [
         v
@@ -98,7 +116,7 @@ def study_tables(doc: str, config, published_paths) -> dict:
     """The report tables of one document's study at ``config`` (:meth:`Study.tables`), by
     file stem: the ``<doc>_study`` job, which reruns when the study's code or config
     changes, not when a claim's does."""
-    from ..reporting.compare import read_published
+    from .compare import read_published
 
     published = read_published(published_paths)
     with one_blas_thread():
@@ -110,7 +128,7 @@ def judge_claims(doc: str, config, published_paths, overrides=None) -> dict:
     judged (:func:`evaluate`) on a study built at ``config`` and at the points of its
     plausible ranges. The ``<doc>_claims`` job; it computes only what the claims use (the
     study's members are lazy)."""
-    from ..reporting.compare import read_published
+    from .compare import read_published
 
     claims, study_cls = claims_of(doc)
     published = read_published(published_paths)
@@ -130,7 +148,7 @@ def reproduce(doc: str, config, published_paths, overrides=None) -> dict:
     result holds ``comparison`` (``shared/CONTRACTS.md`` section 3) and ``robustness``
     (every point of every sweep over an assumed input) beside the study's own tables.
     """
-    from ..reporting.compare import read_published
+    from .compare import read_published
 
     claims, study_cls = claims_of(doc)
     published = read_published(published_paths)

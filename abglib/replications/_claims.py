@@ -50,10 +50,10 @@ import numpy as np
 import pandas as pd
 
 from .._checks import AbglibValueError
-from ..reporting.compare import COMPARISON_COLUMNS, SENTENCE_COLUMN
 from ..verdicts import Alternative, Reading, format_number, robustness
 from ..verdicts._judge import _assess, judge_sentences
 from ..verdicts.robustness import ROBUSTNESS_COLUMNS, config_get, with_values
+from .compare import COMPARISON_COLUMNS, SENTENCE_COLUMN
 
 __all__ = [
     "ROBUSTNESS_COLUMNS",
@@ -386,7 +386,7 @@ def evaluate(
     claims : ClaimSet
         The document's declarations.
     published : DataFrame
-        From :func:`abglib.reporting.compare.read_published`.
+        From :func:`abglib.replications.compare.read_published`.
     study
         The study at the nominal configuration (``study.config``).
     make_study : callable
@@ -400,7 +400,7 @@ def evaluate(
     Returns
     -------
     (comparison, robustness)
-        ``comparison.csv`` rows (:data:`~abglib.reporting.compare.COMPARISON_COLUMNS`) and
+        ``comparison.csv`` rows (:data:`~abglib.replications.compare.COMPARISON_COLUMNS`) and
         every judged point of every robustness design (:data:`ROBUSTNESS_COLUMNS`).
 
     Notes
@@ -477,6 +477,45 @@ def evaluate(
                 }
             )
 
+        # a row whose result moves under seed set 1 rests on a Monte Carlo result
+        chance = False
+        if seeded:
+            r1, v1, rep1 = judged_at(under(1), pub, claim)
+            chance = robustness.rests_on_chance(res, r1)
+        confirm = design.confirm_draws if chance else 1
+        scheduled_draws = [nominal_verdict]  # the draws the share under chance counts
+
+        def draws_at(
+            design_name,
+            names,
+            shown,
+            values,
+            k0,
+            per_point,
+            *,
+            pub=pub,
+            claim=claim,
+            chance=chance,
+            nominal_verdict=nominal_verdict,
+            confirm=confirm,
+            scheduled_draws=scheduled_draws,
+        ):
+            # the scheduled draws of one design point and, for a Monte Carlo row whose
+            # draws there contradict its nominal verdict, the confirmation draws
+            # (abglib.verdicts.robustness.point_verdict); returns the point's verdict
+            ks = robustness.draws_of_point(k0, len(seeded), per_point)
+            got = [judged_at(at(values, k), pub, claim)[1:] for k in ks]
+            if chance and any(v != nominal_verdict for v, _ in got):
+                extra = robustness.confirmation_draws(k0, len(seeded), len(ks), confirm)
+                ks += extra
+                got += [judged_at(at(values, k), pub, claim)[1:] for k in extra]
+            for k, (v, rep) in zip(ks, got, strict=True):
+                point(design_name, names, shown, k, False, rep, v)
+            verdict = robustness.point_verdict(nominal_verdict, [v for v, _ in got], confirm)
+            if verdict == nominal_verdict:
+                scheduled_draws.extend(v for v, _ in got[:per_point])
+            return verdict
+
         # one at a time: each input over its grid, the others nominal
         flips = []
         for name in inputs:
@@ -484,19 +523,22 @@ def evaluate(
             by_value = []
             for value in rng.values:
                 if _same(value, rng.nominal):
-                    k, v, rep = 0, nominal_verdict, row["reproduced"]
-                else:
-                    k = oat_sets[name, _hashable(value)]
-                    _, v, rep = judged_at(at({name: value}, k), pub, claim)
+                    point(
+                        "one_at_a_time",
+                        name,
+                        _fmt(value),
+                        0,
+                        True,
+                        row["reproduced"],
+                        nominal_verdict,
+                    )
+                    by_value.append((value, nominal_verdict))
+                    continue
+                k0 = oat_sets[name, _hashable(value)]
+                v = draws_at("one_at_a_time", name, _fmt(value), {name: value}, k0, 1)
                 by_value.append((value, v))
-                point("one_at_a_time", name, _fmt(value), k, _same(value, rng.nominal), rep, v)
             if len({v for _, v in by_value}) > 1:
                 flips.append(_describe_flip(rng, by_value))
-        # a row whose result moves under seed set 1 rests on a Monte Carlo result
-        chance = False
-        if seeded:
-            r1, v1, rep1 = judged_at(under(1), pub, claim)
-            chance = robustness.rests_on_chance(res, r1)
         # jointly: the document's design, projected onto the row's inputs; a Monte Carlo
         # row under design.joint_seed_sets seed sets at each point (the point's own set
         # and the next ones in turn), any other row under the point's own
@@ -509,10 +551,8 @@ def evaluate(
                 continue
             seen.add(key)
             names = ";".join(n for n, _ in proj)
-            for k in robustness.draws_of_point(k0, len(seeded), per_point):
-                _, v, rep = judged_at(at(p.values, k), pub, claim)
-                by_point.append((proj, v, k))
-                point("joint", names, ";".join(_fmt(x) for _, x in proj), k, False, rep, v)
+            shown = ";".join(_fmt(x) for _, x in proj)
+            by_point.append((proj, draws_at("joint", names, shown, p.values, k0, per_point)))
         # seed sets: a Monte Carlo row under every set at its nominal inputs
         by_set = []
         if chance:
@@ -520,6 +560,7 @@ def evaluate(
             by_set += [judged_at(under(k), pub, claim)[1:] for k in range(2, len(seeded) + 1)]
             for k, (v, rep) in enumerate(by_set):
                 point("seed_set", "seeds", str(k), k, k == 0, rep, v)
+            scheduled_draws.extend(v for v, _ in by_set[1:])
             row["depends_on"] = ";".join(x for x in (row["depends_on"], "seeds") if x)
         if inputs or by_set:
             parts = []
@@ -528,14 +569,20 @@ def evaluate(
             if flips:
                 parts.append(f"one at a time (others nominal{drawn}): {'; '.join(flips)}")
             if any(e[1] != nominal_verdict for e in by_point):
-                parts.append(
-                    robustness.describe_joint(by_point, drawn="" if per_point > 1 else drawn)
-                )
+                parts.append(robustness.describe_joint(by_point, drawn=drawn))
             if parts:
                 causes.append("inputs the document does not give")
-            if len({v for v, _ in by_set}) > 1:
-                parts.append(robustness.describe_seed_sets([v for v, _ in by_set], design))
-                causes.append("chance")
+            lucky = None
+            if chance:
+                lucky = robustness.chance_judgement(
+                    nominal_verdict, scheduled_draws, design.chance_tolerance
+                )
+                if not lucky.robust:
+                    parts.append(
+                        f"under chance it {lucky.describe()}; "
+                        + robustness.describe_seed_sets([v for v, _ in by_set], design)
+                    )
+                    causes.append("chance")
             row["robust"] = "false" if parts or vague == "false" else "true"
             if parts:
                 row["verdict"] = "not_reproducible"
@@ -543,6 +590,10 @@ def evaluate(
                     f"verdict hinges on {' and on '.join(causes)}: "
                     f"{'. '.join(parts)}. At the nominal inputs: {nominal_verdict}"
                     + (f" ({row['note']})" if row["note"] else "")
+                )
+            elif lucky is not None and lucky.agree < lucky.draws:
+                row["note"] = "; ".join(
+                    x for x in (row["note"], f"under chance it {lucky.describe()}") if x
                 )
         rows.append(row)
     sentences = published[SENTENCE_COLUMN] if SENTENCE_COLUMN in published else [""] * len(rows)

@@ -1,9 +1,12 @@
-"""Reporting plumbing (extra ``abglib[reporting]``): published-versus-reproduced tables,
-provenance, notebook rendering and the shared figure style.
+"""Reporting plumbing (extra ``abglib[reporting]``): provenance, notebook rendering,
+report pages, releases and the workflow's glue; the top layer of the package.
 
-``compare``     ``comparison.csv`` and the scorecard (``shared/CONTRACTS.md`` section 3)
 ``provenance``  versions, commit, config hash and seeds of a build
 ``render``      report notebook -> HTML, and the index page
-``plotting``    the one figure style and deterministic PNG saving (imports matplotlib)
-``pipeline``    glue for the Snakemake workflow (logging, atomic outputs, config checks)
+``pipeline``    glue for the Snakemake workflow (config checks, report rules)
+``precision``   each table column's digits derived from plain and perturbed builds
+``verify``      a build checked against a release (``abglib verify``)
+
+The comparison tables themselves are :mod:`abglib.replications.compare`; the shared table
+writing and figure style are :mod:`abglib.common`.
 """

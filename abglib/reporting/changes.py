@@ -50,7 +50,7 @@ from pathlib import Path
 import pandas as pd
 
 from .._checks import AbglibValueError
-from .compare import within_tolerance
+from ..verdicts import within_tolerance
 from .versions import comparison_tables, previous_version
 
 __all__ = [

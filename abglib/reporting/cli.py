@@ -20,7 +20,7 @@
 ``abglib precision``
     Derive the digits every table column is reproducible to, by building the tables plain
     and under several perturbations of the arithmetic (:mod:`abglib.reporting.precision`),
-    and write them to ``abglib/reporting/_precision_table.py``; a text cell (a note, a
+    and write them to ``abglib/common/_precision_table.py``; a text cell (a note, a
     verdict) that moves is listed and makes it exit 1.
 ``abglib findings``
     Rewrite the README's findings from the release's tables (``docs/readme_findings.md`` is the
@@ -201,10 +201,12 @@ def precision(configfiles, runs: int, cores: int, check: bool) -> int:
         print(f"  text moved: {table}, row {row}, {col}: {a!r} -> {b!r}")
     for p in problems[:40]:
         print(f"  problem: {p}")
-    target = Path(prec.__file__).with_name("_precision_table.py")
+    from ..common import tables
+
+    target = Path(tables.__file__).with_name("_precision_table.py")
     how = f"abglib precision --runs {runs} on {', '.join(Path(c).name for c in configs)}"
     if check:
-        from ._precision_table import PRECISION
+        from ..common._precision_table import PRECISION
 
         same = PRECISION == specs
         print(f"{target}: {'current' if same else 'would change'}")

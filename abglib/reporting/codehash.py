@@ -114,7 +114,7 @@ def _save_disk_cache() -> None:
     if _DISK["path"] is None or not _DISK["dirty"]:
         return
     try:
-        from .pipeline import atomic_output
+        from ..common.files import atomic_output
 
         with atomic_output(_DISK["path"]) as tmp:
             tmp.write_text(json.dumps(_DISK["entries"]), encoding="utf-8")

@@ -390,7 +390,7 @@ def _matplotlib_agg():
         if had:
             import matplotlib
 
-            matplotlib.use("Agg")  # a no-op if it is already (abglib.reporting.plotting)
+            matplotlib.use("Agg")  # a no-op if it is already (abglib.common.plotting)
             stack.enter_context(matplotlib.rc_context())
         try:
             yield

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from .pngmeta import png_description
+from ..common.pngmeta import png_description
 from .tables import GROUP_MIN, table_html
 
 __all__ = ["Report"]
@@ -111,14 +111,14 @@ class Report:
     # -- reading ------------------------------------------------------------------------
     def read(self, key: str, reader=None, **kwargs) -> pd.DataFrame:
         """Read ``tables[key]`` with ``reader`` (default
-        :func:`~abglib.reporting.compare.read_table`: a round-off bound such as ``<1e-11``
+        :func:`~abglib.common.tables.read_table`: a round-off bound such as ``<1e-11``
         read as 0.0 in a column of numbers) and tag it with its source
         (``df.attrs["source"]``, kept by pandas through most operations)."""
         if key not in self.tables:
             raise KeyError(
                 f"table {key!r} is not an input of this report; have {sorted(self.tables)}"
             )
-        from .compare import read_table
+        from ..common.tables import read_table
 
         df = (reader or read_table)(self.tables[key], **kwargs)
         df.attrs["source"] = key

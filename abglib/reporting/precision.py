@@ -7,10 +7,11 @@ or supported dependency set verifies against the release (``abglib verify``).
 How the digits are found (``abglib precision``, :func:`derive_precision`):
 
 1. The table targets of a config (:data:`TABLE_TARGETS`) are built ``1 + runs`` times in
-   fresh directories, with every float written at :data:`RAW_DIGITS` significant digits
-   (``ABGLIB_RAW_TABLES=1``: no declared precision, no bounds): once plain and once for
-   each perturbation seed ``k = 1..runs`` (``ABGLIB_PERTURB=k``: every floating-point
-   input of the numerical core moved by up to 7 ulps, :mod:`abglib._perturb`).
+   fresh directories, with every float written at :data:`abglib.common.tables.RAW_DIGITS`
+   significant digits (``ABGLIB_RAW_TABLES=1``: no declared precision, no bounds): once
+   plain and once for each perturbation seed ``k = 1..runs`` (``ABGLIB_PERTURB=k``: every
+   floating-point input of the numerical core moved by up to 7 ulps,
+   :mod:`abglib._perturb`).
 2. For each numeric cell, its deviation ``e`` is the largest difference between a
    perturbed run and the plain one, times the safety factor :data:`SAFETY`. A cell
    written with ``n`` significant digits is reproducible when one unit of its last digit
@@ -24,14 +25,14 @@ How the digits are found (``abglib precision``, :func:`derive_precision`):
    ``n`` is the fewest digits any cell above the bound keeps, at most the config's
    ``significant_digits``.
 4. The specs of every config derived are merged (the stricter wins) into
-   :mod:`abglib.reporting._precision_table`, a generated module that :func:`precision_for`
-   reads whenever :func:`~abglib.reporting.compare.write_csv` writes a table: a new table
-   gets its precision by running the command again, and a column with no derived spec
-   keeps the config's digits (or what the code that makes it declares; the stricter of
-   the two wins).
+   :mod:`abglib.common._precision_table`, a generated module that
+   :func:`abglib.common.tables.precision_for` reads whenever
+   :func:`~abglib.common.tables.write_csv` writes a table: a new table gets its precision
+   by running the command again, and a column with no derived spec keeps the config's
+   digits (or what the code that makes it declares; the stricter of the two wins).
 
 Text cells (notes, verdicts) that differ between the runs are listed by the command: a
-note must write a round-off number as a bound (:func:`abglib.reporting.compare.roundoff`)
+note must write a round-off number as a bound (:func:`abglib.common.tables.roundoff`)
 and a verdict must not move, so each such cell is a bug to fix, not a precision to derive.
 """
 
@@ -46,28 +47,20 @@ from pathlib import Path
 import numpy as np
 
 from .._checks import AbglibValueError
+from ..common.files import atomic_output
+from ..common.tables import RAW_ENV, _parse, _spec, merge_specs, stricter, table_key
 
 __all__ = [
     "MIN_DIGITS",
-    "RAW_DIGITS",
-    "RAW_ENV",
     "SAFETY",
     "TABLE_TARGETS",
     "ColumnPrecision",
     "Derivation",
     "column_spec",
     "derive_folders",
-    "merge_specs",
-    "precision_for",
-    "stricter",
-    "table_key",
     "write_table_module",
 ]
 
-#: environment variable: ``1`` writes every float at :data:`RAW_DIGITS` digits, no bounds
-RAW_ENV = "ABGLIB_RAW_TABLES"
-#: digits of a raw table: enough to round-trip any float64
-RAW_DIGITS = 17
 #: the observed perturbation deviation is multiplied by this before digits are kept:
 #: a handful of seeds samples the deviation, it does not bound it
 SAFETY = 10.0
@@ -76,104 +69,6 @@ MIN_DIGITS = 3
 #: Snakemake targets that make every table of a build (no figures, no reports)
 #: (rule ``tables``, workflow/rules/compare.smk; the datasets for their bytes)
 TABLE_TARGETS = ("datasets", "tables")
-
-
-def raw_tables() -> bool:
-    """Whether ``ABGLIB_RAW_TABLES`` asks for raw tables (``1``) or not (unset, ``0``)."""
-    text = os.environ.get(RAW_ENV, "").strip()
-    if text not in ("", "0", "1"):
-        raise AbglibValueError(f"{RAW_ENV} must be 0 or 1 (or unset), got {text!r}")
-    return text == "1"
-
-
-def table_key(path) -> str:
-    """The key of a table in the precision table: ``<folder>/<stem>`` of its file
-    (``results/alwagih/table1.csv`` -> ``alwagih/table1``); one benchmark cell's table
-    (``results/benchmark/cells/<variant>/<scenario>.csv``) has the key of the matrix it
-    is a row of, ``benchmark/cells``, so that a new variant's cells get its precision."""
-    p = Path(path)
-    if len(p.parts) >= 4 and p.parts[-3] == "cells":
-        return f"{p.parts[-4]}/cells"
-    return f"{p.parent.name}/{p.stem}"
-
-
-# --------------------------------------------------------------------------- specs
-def _parse(spec) -> tuple[float | None, int | None]:
-    """``(bound, digits)`` of a spec: ``6`` -> (None, 6), ``"<1e-12"`` -> (1e-12, None),
-    ``"<1e-10:5"`` -> (1e-10, 5)."""
-    if isinstance(spec, bool) or not isinstance(spec, (int, str)):
-        raise AbglibValueError(f"a precision is digits (int) or '<bound[:digits]', got {spec!r}")
-    if isinstance(spec, int):
-        if spec < 1:
-            raise AbglibValueError(f"a precision's digits must be >= 1, got {spec}")
-        return None, spec
-    if not spec.startswith("<"):
-        raise AbglibValueError(f"a precision string must start with '<', got {spec!r}")
-    bound, _, n = spec[1:].partition(":")
-    try:
-        return float(bound), (int(n) if n else None)
-    except ValueError:
-        raise AbglibValueError(f"a precision must be '<bound[:digits]', got {spec!r}") from None
-
-
-def _spec(bound: float | None, digits: int | None):
-    if bound is None:
-        return digits
-    text = f"{bound:g}"
-    return f"<{text}:{digits}" if digits is not None else f"<{text}"
-
-
-def stricter(a, b):
-    """The stricter of two precision specs: the larger bound and the fewer digits."""
-    if a is None:
-        return b
-    if b is None:
-        return a
-    (ba, na), (bb, nb) = _parse(a), _parse(b)
-    bounds = [x for x in (ba, bb) if x is not None]
-    digits = [x for x in (na, nb) if x is not None]
-    return _spec(max(bounds) if bounds else None, min(digits) if digits else None)
-
-
-def merge_specs(*tables: Mapping[str, Mapping[str, object]]) -> dict[str, dict[str, object]]:
-    """Merge ``{table: {column: spec}}`` mappings, the stricter spec winning."""
-    out: dict[str, dict[str, object]] = {}
-    for table in tables:
-        for key, cols in table.items():
-            dest = out.setdefault(key, {})
-            for col, spec in cols.items():
-                dest[col] = stricter(dest.get(col), spec)
-    return out
-
-
-def _derived() -> Mapping[str, Mapping[str, object]]:
-    from ._precision_table import PRECISION
-
-    return PRECISION
-
-
-def precision_for(df, path, digits: int, precision=None) -> tuple[int, dict]:
-    """The ``(digits, precision)`` :func:`~abglib.reporting.compare.write_csv` writes
-    ``df`` at ``path`` with: the code's declared precision (``precision``, else
-    ``df.attrs["precision"]``) merged with the derived one of this table (stricter wins,
-    derived digits never more than ``digits``). In a raw build (``ABGLIB_RAW_TABLES=1``):
-    :data:`RAW_DIGITS` digits and no declared precision."""
-    if raw_tables():
-        return RAW_DIGITS, {}
-    declared = dict(df.attrs.get("precision", {}) if precision is None else precision)
-    derived = _derived().get(table_key(path), {})
-    merged = dict(declared)
-    for col, spec in derived.items():
-        if col in df.columns:
-            merged[col] = stricter(merged.get(col), _capped(spec, digits))
-    return digits, merged
-
-
-def _capped(spec, digits: int):
-    bound, n = _parse(spec)
-    if bound is None:
-        return spec if n < digits else None
-    return _spec(bound, None if n is None else min(n, digits))
 
 
 # --------------------------------------------------------------------------- derivation
@@ -204,7 +99,7 @@ def column_spec(
     -------
     int, str or None
         ``None`` when every cell keeps ``cap`` digits, else ``n``, ``"<B:n"`` or ``"<B"``
-        (:func:`abglib.reporting.compare.format_cell`).
+        (:func:`abglib.common.tables.format_cell`).
 
     Raises
     ------
@@ -391,9 +286,7 @@ def _roundoff_cells(values: np.ndarray, spec) -> int:
 
 
 def write_table_module(specs: Mapping[str, Mapping[str, object]], path: Path, how: str) -> None:
-    """Write the generated module :mod:`abglib.reporting._precision_table`."""
-    from .pipeline import atomic_output
-
+    """Write the generated module :mod:`abglib.common._precision_table`."""
     lines = [
         '"""Derived precision of every table column (generated by ``abglib precision``; do not',
         "edit by hand: run the command again). See :mod:`abglib.reporting.precision`.",

@@ -23,8 +23,6 @@ pages'; ``abglib release`` refuses to cut a release while there is any.
 
 from __future__ import annotations
 
-import hashlib
-import json
 import platform
 import subprocess
 from collections.abc import Mapping
@@ -33,14 +31,13 @@ from importlib import metadata
 from pathlib import Path
 
 from .._checks import AbglibValueError
+from ..common.files import config_hash
 
 __all__ = [
     "PACKAGES",
     "SAME_IN_A_RELEASE",
     "abglib_version",
-    "canonical_json",
     "collect",
-    "config_hash",
     "find_seeds",
     "git_commit",
     "package_versions",
@@ -52,16 +49,6 @@ __all__ = [
 
 #: Distributions whose versions every report states.
 PACKAGES = ("abglib", "numpy", "scipy", "pandas", "matplotlib", "numba", "snakemake")
-
-
-def canonical_json(obj) -> str:
-    """JSON with sorted keys and no insignificant whitespace (the hashed form)."""
-    return json.dumps(obj, sort_keys=True, separators=(",", ":"), ensure_ascii=True, default=str)
-
-
-def config_hash(config: Mapping) -> str:
-    """sha256 of the canonical JSON of ``config`` (key order and layout do not matter)."""
-    return hashlib.sha256(canonical_json(config).encode("utf-8")).hexdigest()
 
 
 def git_commit(path=".", ignore=("reports",)) -> str | None:

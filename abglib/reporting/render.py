@@ -34,7 +34,7 @@ __all__ = [
 
 def write_text(path, text: str) -> None:
     """Write ``text`` to ``path`` atomically (temp file beside it, then ``os.replace``)."""
-    from .pipeline import atomic_output
+    from ..common.files import atomic_output
 
     with atomic_output(path) as tmp:
         tmp.write_text(text, encoding="utf-8", newline="\n")

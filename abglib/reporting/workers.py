@@ -30,7 +30,7 @@ import threading
 import traceback
 from pathlib import Path
 
-from .pipeline import JobFailed, job_threads
+from ..common.jobs import JobFailed, job_threads
 
 __all__ = [
     "PRELOAD",
@@ -67,12 +67,15 @@ PRELOAD = [
     "jupytext",
     "nbformat",
     "IPython.core.interactiveshell",
-    "abglib.reporting.compare",
+    "abglib.common.files",
+    "abglib.common.jobs",
+    "abglib.common.plotting",
+    "abglib.common.tables",
+    "abglib.replications.compare",
     "abglib.reporting.execute",
     "abglib.reporting.notebook",
     "abglib.reporting.page",
     "abglib.reporting.pipeline",
-    "abglib.reporting.plotting",
     "abglib.reporting.render",
     # last: the compiled loops themselves and matplotlib's caches (load_kernels,
     # load_figures), with everything above in place
@@ -158,7 +161,7 @@ def load_figures() -> None:
         import matplotlib.pyplot as plt
         from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-        from .plotting import STYLE
+        from ..common.plotting import STYLE
 
         with plt.rc_context(STYLE):
             fig, ax = plt.subplots()

@@ -51,7 +51,7 @@ def published_paths(doc: str) -> list[Path]:
 
 @functools.cache
 def published(doc: str):
-    from abglib.reporting.compare import read_published
+    from abglib.replications.compare import read_published
 
     return read_published(published_paths(doc))
 

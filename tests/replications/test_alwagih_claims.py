@@ -26,7 +26,7 @@ from abglib.replications import claims_of, plausible_ranges
 from abglib.replications._claims import config_with
 from abglib.replications.alwagih import stability
 from abglib.replications.alwagih.study import AlwagihStudy, grid, rank_methods
-from abglib.reporting.compare import Alternative, judge
+from abglib.verdicts import Alternative, judge
 
 from .conftest import claim_test, published, repo_config, small_config, study_for
 

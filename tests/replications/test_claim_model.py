@@ -10,7 +10,7 @@ import pytest
 from abglib import AbglibValueError
 from abglib.replications import ClaimSet, Reading, Result, Study, evaluate, plausible_ranges
 from abglib.replications._claims import config_get, config_with
-from abglib.reporting.compare import COMPARISON_COLUMNS, scorecard
+from abglib.replications.compare import COMPARISON_COLUMNS, scorecard
 
 PUB = pd.DataFrame(
     [

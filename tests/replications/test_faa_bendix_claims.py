@@ -21,8 +21,8 @@ from abglib.replications import evaluate
 from abglib.replications.faa_bendix import printed
 from abglib.replications.faa_bendix import program as bendix
 from abglib.replications.faa_bendix.claims import CLAIMS
-from abglib.reporting.compare import tolerance_from_printed
 from abglib.simulate import bendix_impulse, bendix_ramp
+from abglib.verdicts import tolerance_from_printed
 
 from .conftest import claim_test, published, small_config, study_for
 

@@ -22,7 +22,7 @@ from abglib.analysis._statespace import state_space
 from abglib.conventions import from_huang, to_huang
 from abglib.replications._claims import config_with
 from abglib.replications.huang.claims import CLAIMS
-from abglib.reporting.compare import Alternative, judge
+from abglib.verdicts import Alternative, judge
 
 from .conftest import claim_test, published, repo_config, study_for
 

@@ -44,7 +44,7 @@ import pandas as pd
 from IPython.display import Markdown, display
 
 from abglib.bench import findings
-from abglib.reporting.compare import read_table
+from abglib.common.tables import read_table
 from abglib.reporting.notebook import Report
 
 R = Report(doc, figures, tables, made_by, notebook, released=released)

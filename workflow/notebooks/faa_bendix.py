@@ -50,7 +50,7 @@ notebook = "workflow/notebooks/faa_bendix.py"
 import pandas as pd
 from IPython.display import Markdown, display
 
-from abglib.reporting.compare import non_matches
+from abglib.replications.compare import non_matches
 from abglib.reporting.notebook import Report
 
 R = Report(doc, figures, tables, made_by, notebook, released=released)

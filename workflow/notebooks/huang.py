@@ -49,7 +49,8 @@ notebook = "workflow/notebooks/huang.py"
 import pandas as pd
 from IPython.display import Markdown, display
 
-from abglib.reporting.compare import non_matches, read_table
+from abglib.common.tables import read_table
+from abglib.replications.compare import non_matches
 from abglib.reporting.notebook import Report
 
 R = Report(doc, figures, tables, made_by, notebook, released=released)

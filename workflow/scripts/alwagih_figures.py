@@ -1,17 +1,17 @@
 """Draw seed 001's Figures 5-8 (and the causal-M5 comparison) from the study's tables."""
 
-from abglib.reporting.compare import read_table
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
+from abglib.common.tables import read_table
 
 
 def main(input, output, params) -> None:
+    from abglib.common.plotting import save_figure
     from abglib.replications.alwagih.figures import (
         alwagih_causal,
         alwagih_rmse_bars,
         alwagih_tracks,
     )
     from abglib.replications.alwagih.printed import PAPER_METHODS as PAPER
-    from abglib.reporting.plotting import save_figure
 
     tracks = read_table(input.tracks)
     summary = read_table(input.mc_rmse)

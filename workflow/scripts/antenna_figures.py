@@ -1,12 +1,12 @@
 """Draw the tracking-antenna figures (seed 004) from the tables of rule antenna_reproduce."""
 
-from abglib.reporting.compare import read_table
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
+from abglib.common.tables import read_table
 
 
 def main(input, output, params) -> None:
+    from abglib.common.plotting import save_figure
     from abglib.replications.antenna.figures import antenna_figure
-    from abglib.reporting.plotting import save_figure
 
     tables = {k: read_table(v) for k, v in input.items()}
     for name, path in output.items():

@@ -1,12 +1,12 @@
 """Heatmap of the benchmark matrix and the noise-versus-lag trade-off per design family."""
 
-from abglib.reporting.compare import read_table
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
+from abglib.common.tables import read_table
 
 
 def main(input, output, params) -> None:
     from abglib.bench.figures import benchmark_heatmap, tradeoff_figure
-    from abglib.reporting.plotting import save_figure
+    from abglib.common.plotting import save_figure
 
     league = read_table(input.league)
     save_figure(benchmark_heatmap(league, params.rank_by), output.heatmap, dpi=params.dpi)

@@ -2,8 +2,8 @@
 
 import pandas as pd
 
-from abglib.reporting.compare import read_table
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
+from abglib.common.tables import read_table
 
 
 def variants_table(specs) -> pd.DataFrame:
@@ -16,7 +16,7 @@ def variants_table(specs) -> pd.DataFrame:
 def main(input, output, params) -> None:
     from abglib.bench.benchmark import league_table, tradeoff_table
     from abglib.bench.metrics import fail_threshold
-    from abglib.reporting.compare import write_csv
+    from abglib.common.tables import write_csv
 
     cells = [read_table(p) for p in input.cells]
     runs = min(int(c["runs"].iloc[0]) for c in cells)

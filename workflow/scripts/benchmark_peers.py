@@ -1,11 +1,11 @@
 """abglib against FilterPy, scipy.signal and python-control on the same gains."""
 
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
 
 
 def main(output, params) -> None:
     from abglib.bench.peers import agreement_table
-    from abglib.reporting.compare import write_csv
+    from abglib.common.tables import write_csv
 
     write_csv(agreement_table(float(params.rtol), int(params.seed)), output.peers, params.digits)
 

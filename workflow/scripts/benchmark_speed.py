@@ -9,7 +9,8 @@ import importlib.util
 
 import pandas as pd
 
-from abglib.reporting.pipeline import atomic_output, log_to
+from abglib.common.files import atomic_output
+from abglib.common.jobs import log_to
 
 COLUMNS = ["case", "filter", "implementation", "samples_per_s", "ratio_vs_filterpy"]
 

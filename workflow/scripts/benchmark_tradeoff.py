@@ -1,12 +1,12 @@
 """Noise-versus-lag curves: each design family of the config swept over its parameter."""
 
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
 
 
 def main(input, output, params) -> None:
     from abglib.bench import datasets
     from abglib.bench.benchmark import tradeoff_sweep
-    from abglib.reporting.compare import write_csv
+    from abglib.common.tables import write_csv
 
     data = [datasets.read(p) for p in input.parquets]
     curves = tradeoff_sweep(

@@ -1,7 +1,7 @@
 """Write ``changes.csv`` and ``changes.html`` of a build: its comparison tables against the
 previous version folder under ``reports/`` (or a page saying there is none)."""
 
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
 
 
 def main(input, output, params) -> None:

@@ -1,12 +1,12 @@
 """Draw the FAA Bendix report's figures (seed 003) from the tables of its reproduce rule."""
 
-from abglib.reporting.compare import read_table
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
+from abglib.common.tables import read_table
 
 
 def main(input, output, params) -> None:
+    from abglib.common.plotting import save_figure
     from abglib.replications.faa_bendix.figures import draw_all
-    from abglib.reporting.plotting import save_figure
 
     figs = draw_all(
         read_table(input.responses),

@@ -1,12 +1,12 @@
 """Frequency responses of one figure of seed 000 (Figs. 1-6), as a long table
 (abglib.replications.steelman1978.figures.response_table)."""
 
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
 
 
 def main(output, params) -> None:
+    from abglib.common.tables import write_csv
     from abglib.replications.steelman1978.figures import response_table
-    from abglib.reporting.compare import write_csv
 
     write_csv(response_table(params.figure, params.grids), output.data, params.digits)
 

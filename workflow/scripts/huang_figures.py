@@ -1,13 +1,13 @@
 """Draw the Huang et al. report's figures (seed 002, Figs 2-7) from the study's tables."""
 
-from abglib.reporting.compare import read_table
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
+from abglib.common.tables import read_table
 
 
 def main(input, output, params) -> None:
+    from abglib.common.plotting import save_figure
+    from abglib.replications.compare import read_published
     from abglib.replications.huang.figures import huang_figures
-    from abglib.reporting.compare import read_published
-    from abglib.reporting.plotting import save_figure
 
     names = ("bandwidth_curves", "tables12", "thermal", "track", "track_metrics")
     tables = {n: read_table(input[n]) for n in names}

@@ -1,12 +1,12 @@
 """Draw one frequency-response figure of seed 000 (Figs. 1-6) from its response table."""
 
-from abglib.reporting.compare import read_table
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
+from abglib.common.tables import read_table
 
 
 def main(input, output, params) -> None:
+    from abglib.common.plotting import save_figure
     from abglib.replications.steelman1978.figures import draw
-    from abglib.reporting.plotting import save_figure
 
     fig = draw(read_table(input.data), params.axes, params.caption)
     save_figure(fig, output.png, dpi=params.dpi)

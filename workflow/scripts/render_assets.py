@@ -2,7 +2,7 @@
 
 from pathlib import Path
 
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
 
 
 def main(output) -> None:

@@ -4,7 +4,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
 
 
 def main(input, output, params, config) -> None:

@@ -9,7 +9,8 @@ import os
 import shutil
 from pathlib import Path
 
-from abglib.reporting.pipeline import atomic_output, log_to
+from abglib.common.files import atomic_output
+from abglib.common.jobs import log_to
 
 
 def copy_atomic(src, dst) -> None:

@@ -3,13 +3,13 @@
 ``part='claims'`` writes ``comparison.csv`` (CONTRACTS.md §3) and ``robustness.csv``
 (abglib.replications.judge_claims)."""
 
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
 
 
 def main(input, output, params) -> None:
     from abglib import AbglibValueError
+    from abglib.common.tables import write_csv
     from abglib.replications import judge_claims, study_tables
-    from abglib.reporting.compare import write_csv
 
     published = list(input.published)
     if params.part == "study":

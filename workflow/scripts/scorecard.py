@@ -2,11 +2,12 @@
 
 import pandas as pd
 
-from abglib.reporting.pipeline import log_to
+from abglib.common.jobs import log_to
 
 
 def main(input, output, params) -> None:
-    from abglib.reporting.compare import scorecard, write_csv
+    from abglib.common.tables import write_csv
+    from abglib.replications.compare import scorecard
 
     tables = [pd.read_csv(p, dtype=str, keep_default_na=False) for p in input.comparisons]
     write_csv(scorecard(tables), output.scorecard, params.digits)

@@ -20,8 +20,9 @@ import numpy as np
 
 from ... import methods
 from ...analysis import is_stable
+from ...common.tables import roundoff
 from ...gains import Gains
-from ...reporting.compare import format_number, parse_printed, roundoff
+from ...verdicts import format_number, parse_printed
 from .. import ClaimSet, Reading, Result
 from . import stability
 from .printed import BASES, COMPARED, NOISE_OF_TABLE, PAPER_METHODS, printed_values

@@ -12,7 +12,7 @@ import pandas as pd
 
 from ... import methods
 from ..._checks import AbglibValueError
-from ...reporting.compare import parse_printed
+from ...verdicts import parse_printed
 
 __all__ = [
     "BASES",

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...reporting.plotting import (
+from ...common.plotting import (
     REFERENCE,
     WIDTH,
     describe,

@@ -11,7 +11,8 @@ import re
 
 import numpy as np
 
-from ...reporting.compare import roundoff, tolerance_from_printed
+from ...common.tables import roundoff
+from ...verdicts import tolerance_from_printed
 from .._claims import ClaimSet, Reading, Result
 from . import program as bendix
 from .study import FaaBendixStudy

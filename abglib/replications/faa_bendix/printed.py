@@ -14,7 +14,7 @@ from decimal import ROUND_DOWN, ROUND_HALF_UP, Decimal
 import pandas as pd
 
 from ..._checks import AbglibValueError
-from ...reporting.compare import parse_printed
+from ...verdicts import parse_printed
 
 __all__ = ["captions", "memo_gains", "round_half_up", "truncate"]
 

@@ -14,7 +14,7 @@ import pandas as pd
 
 from ...analysis import vrf
 from ...gains import Gains
-from ...reporting.compare import parse_printed, tolerance_from_printed
+from ...verdicts import parse_printed, tolerance_from_printed
 from .._claims import Study
 from . import printed
 from . import program as bendix

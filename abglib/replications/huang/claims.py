@@ -20,10 +20,10 @@ from ...analysis import (
     steady_state_lag,
     transfer_function,
 )
+from ...common.tables import roundoff
 from ...conventions import from_huang, to_huang
 from ...engine import track
 from ...gains import Gains
-from ...reporting.compare import roundoff
 from .._claims import ClaimSet, Reading, Result
 from .printed import (
     bandwidth_for_sigma,

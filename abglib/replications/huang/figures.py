@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ...reporting.plotting import (
+from ...common.plotting import (
     REFERENCE,
     WIDTH,
     describe,
@@ -298,7 +298,7 @@ def huang_figures(tables: dict, published: pd.DataFrame, cfg: dict) -> dict:
         ``bandwidth_curves``, ``tables12``, ``thermal``, ``track``, ``track_metrics``
         (``results/huang/*.csv``).
     published : DataFrame
-        The transcription (:func:`abglib.reporting.compare.read_published`): the stated
+        The transcription (:func:`abglib.replications.compare.read_published`): the stated
         ENBW limit of Fig 4 is drawn from it.
     cfg : dict
         The ``huang`` config section.

@@ -19,10 +19,10 @@ import pandas as pd
 
 from ..._checks import AbglibValueError
 from ...analysis import enbw, enbw_numeric, is_stable, pole_radius
+from ...common.tables import with_precision
 from ...conventions import from_huang, to_huang
 from ...design import huang_for_enbw
 from ...gains import Gains
-from ...reporting.compare import with_precision
 from ...simulate import white_noise
 from .._claims import Study
 from .._numerics import snap

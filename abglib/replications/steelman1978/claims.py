@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 
 from ... import analysis as A
+from ...common.tables import roundoff
 from ...gains import Gains
-from ...reporting.compare import roundoff
 from .._claims import ClaimSet, Reading, Result
 from .study import SteelmanStudy
 

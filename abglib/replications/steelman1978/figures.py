@@ -12,9 +12,32 @@ import numpy as np
 import pandas as pd
 
 from ...analysis import frequency_response
-from ...reporting.pipeline import curve_label, gains_from_spec, wt_grid
+from ...bench.variants import gains_from_spec
+from ...gains import Gains
+from .study import wt_grid
 
-__all__ = ["draw", "response_table"]
+__all__ = ["OUTPUT_LABELS", "curve_label", "draw", "response_table"]
+
+#: How each transfer-function output is written in seed 000 (times the curve's scale).
+OUTPUT_LABELS = {
+    "x_smooth": "X̄/X",
+    "x_pred": "X_p/X",
+    "v_smooth": "T·V̄/X",
+    "a_smooth": "T²·Ā/X",
+}
+
+
+def curve_label(spec: Mapping, gains: Gains) -> str:
+    """Legend text of a config curve, e.g. ``'X̄/X, standard α-β-γ, α=0.3'``."""
+    scale = float(spec.get("scale", 1.0))
+    out = OUTPUT_LABELS[spec["output"]]
+    if scale != 1.0:
+        out = f"{scale:g}·{out}"
+    name = {"standard_abg": "standard α-β-γ", "standard_ab": "standard α-β", "qd": "QD"}
+    label = f"{out}, {name[spec['design']]}, α={float(gains.alpha):.4g}"
+    if spec["design"] == "qd" and "m" in spec:
+        label += f" (m={float(spec['m']):g})"
+    return label
 
 
 def response_table(figure: Mapping, grids: Mapping) -> pd.DataFrame:
@@ -53,6 +76,6 @@ def response_table(figure: Mapping, grids: Mapping) -> pd.DataFrame:
 
 def draw(data: pd.DataFrame, axes: str, caption: str = ""):
     """One of Figs. 1-6 from its :func:`response_table` (linear axes or a Bode plot)."""
-    from ...reporting.plotting import frequency_response_figure
+    from ...common.plotting import frequency_response_figure
 
     return frequency_response_figure(data, axes, caption)

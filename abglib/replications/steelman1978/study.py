@@ -17,6 +17,7 @@ given a number there: how many dB apart two curves may be and still be "very sim
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from functools import cached_property
 
 import numpy as np
@@ -24,14 +25,30 @@ import pandas as pd
 
 from ... import analysis as A
 from ... import design
+from ..._checks import AbglibValueError
+from ...common.tables import ROUNDOFF, with_precision
 from ...engine import track
 from ...gains import Gains
-from ...reporting.compare import ROUNDOFF, parse_printed, with_precision
-from ...reporting.pipeline import wt_grid
+from ...verdicts import parse_printed
 from .._claims import Study
 from .equations import equation_table, stability_table
 
 __all__ = ["SteelmanStudy", "fading_memory_weights"]
+
+
+def wt_grid(grid: Mapping, kind: str) -> np.ndarray:
+    """omega*T grid from a config grid ``{start, stop_over_pi, n}``.
+
+    ``kind='linear'``: evenly spaced; ``'log'``: log-spaced (``start`` must be > 0).
+    """
+    start, stop, n = float(grid["start"]), float(grid["stop_over_pi"]) * np.pi, int(grid["n"])
+    if kind == "linear":
+        return np.linspace(start, stop, n)
+    if kind == "log":
+        if start <= 0:
+            raise AbglibValueError(f"a log grid needs start > 0, got {start!r}")
+        return np.geomspace(start, stop, n)
+    raise AbglibValueError(f"kind must be one of ['linear', 'log'], got {kind!r}")
 
 
 def fading_memory_weights(theta: float, degree: int, n: int) -> np.ndarray:

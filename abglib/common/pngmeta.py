@@ -1,6 +1,6 @@
 """The text metadata of a PNG file (standard library only).
 
-:func:`abglib.reporting.plotting.save_figure` stores each figure's alt text under the
+:func:`abglib.common.plotting.save_figure` stores each figure's alt text under the
 ``Description`` key; the report pages read it back for ``<img alt>`` without importing
 matplotlib.
 """

@@ -1,8 +1,9 @@
 """The one figure style, its colours, legend placement, alt text and PNG saving.
 
-matplotlib is imported only here and by the figure modules. Computing and plotting are
-separate (python-control style): the workflow computes a table, a figure function draws
-it. Every figure function
+matplotlib is imported only here and by the figure modules (of the benchmark, of each
+document); the style sits in :mod:`abglib.common`, below every layer that draws.
+Computing and plotting are separate (python-control style): the workflow computes a table,
+a figure function draws it. Every figure function
 
 - runs under :data:`STYLE` (decorate it with :func:`styled`): one font, one set of sizes
   and line widths, constrained layout (no blank bands, nothing cut off);
@@ -475,7 +476,7 @@ def save_figure(fig, path, alt: str | None = None, *, dpi: int = DPI) -> None:
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from PIL import Image, PngImagePlugin
 
-    from .pipeline import atomic_output
+    from .files import atomic_output
 
     try:
         if alt is not None and not isinstance(alt, str):
