@@ -1,4 +1,4 @@
-"""The reports in a real browser: headless Chromium, offline (abglib.reporting.browser).
+"""The reports in a real browser: headless Chromium, offline (tests/_browser.py).
 
 Two parts. The driver's own tests load small pages written here, each with known defects,
 and check that every defect is caught and that a clean page passes (and that a request to
@@ -27,7 +27,8 @@ from pathlib import Path
 import pytest
 
 import abglib
-from abglib.reporting.browser import (
+
+from ._browser import (
     Browser,
     PageCheck,
     check_folder,
@@ -35,7 +36,6 @@ from abglib.reporting.browser import (
     find_chromium,
     report_pages,
 )
-
 from .conftest import require
 
 REPO = Path(__file__).resolve().parents[1]
@@ -238,7 +238,7 @@ def test_report_page_in_the_browser(browser, folder, page):
 @needs_chromium
 def test_page_heights_and_screenshots_are_recorded(capsys):
     """Runs after the pages: writes pages.csv per folder and prints the heights."""
-    from abglib.reporting.browser import write_summary
+    from ._browser import write_summary
 
     if not CHECKED:
         require("no report page was checked")

@@ -8,7 +8,7 @@ that the current release's reports are inside the site and linked from its front
 that no local link, anchor or image of any page is broken. The browser test loads every
 page of the site (the copied reports included) offline and fails on any network request,
 failed request, console error, raw TeX, broken image or horizontal overflow
-(:mod:`abglib.reporting.browser`).
+(``tests/_browser.py``).
 
 Without Sphinx (the ``docs`` extra) or Chromium the tests skip, saying why; under CI
 (``CI=true``, as ``.ci/run`` runs) they fail instead. The References test needs neither.
@@ -272,7 +272,7 @@ def test_no_broken_local_link_anchor_or_image(site):
 @pytest.mark.docs
 @pytest.mark.browser
 def test_every_page_loads_offline_in_chromium(site):
-    from abglib.reporting.browser import Browser, check_page, find_chromium
+    from ._browser import Browser, check_page, find_chromium
 
     chromium = find_chromium()
     if chromium is None:

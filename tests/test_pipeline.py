@@ -223,7 +223,7 @@ def test_built_reports_in_a_browser(two_runs, tmp_path):
     """The small build's pages (not only the committed release) pass the offline browser
     checks of tests/test_browser.py: no request, no console error, no raw TeX, no NaN,
     no broken image, no horizontal overflow."""
-    from abglib.reporting.browser import check_folder, find_chromium
+    from ._browser import check_folder, find_chromium
 
     if find_chromium() is None:
         require("no Chromium on PATH (apt-get install chromium; .ci/run installs it)")
