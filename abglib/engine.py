@@ -104,6 +104,7 @@ def _kernel(order: int = 3):
     return guvectorize([sig], layout, nopython=True, cache=True)(_kernels.series3)
 
 
+@functools.cache
 def _batch_kernel(order: int, parallel: bool):
     """The batched kernel (gains and dt constant in time; see :mod:`abglib._kernels`)."""
     from . import _kernels
@@ -112,17 +113,32 @@ def _batch_kernel(order: int, parallel: bool):
 
 
 # --------------------------------------------------------------------------- checks
-def _time_operand(name: str, arr: np.ndarray, n: int) -> np.ndarray:
-    """Broadcast an operand's time axis to length ``n`` (a view, never a copy)."""
+def _time_shape(name: str, arr: np.ndarray, n: int) -> tuple:
+    """The shape of an operand with its time axis broadcast to length ``n``."""
     if arr.ndim == 0:
-        return np.broadcast_to(arr, (n,))
+        return (n,)
     if arr.shape[-1] not in (1, n):
         raise AbglibValueError(
             f"{name} has last (time) axis of length {arr.shape[-1]}, but z has {n} samples; "
             f"the last axis must have length 1 or {n} (for a bank of gains add a trailing "
             f"axis, e.g. alpha[:, None])"
         )
-    return np.broadcast_to(arr, arr.shape[:-1] + (n,))
+    return arr.shape[:-1] + (n,)
+
+
+class _TimeOperands(dict):
+    """The operands with their time axes broadcast to ``n`` samples (views, never copies),
+    each made on first use: the batched path of a constant-gain call needs none of them,
+    and making six views cost a fifth of a small call's time."""
+
+    def __init__(self, given: dict, n: int):
+        super().__init__()
+        self._given, self._n = given, n
+
+    def __missing__(self, name: str) -> np.ndarray:
+        arr = self._given[name]
+        view = self[name] = np.broadcast_to(arr, _time_shape(name, arr, self._n))
+        return view
 
 
 def _initial_state(init, batch_shape):
@@ -321,12 +337,13 @@ def track(
         "dt": dt,
         "detected": det,
     }
-    operands = {k: _time_operand(k, v, n) for k, v in given.items()}
+    shapes = {k: _time_shape(k, v, n) for k, v in given.items()}
     try:
-        full = np.broadcast_shapes(*(v.shape for v in operands.values()))
+        full = np.broadcast_shapes(*shapes.values())
     except ValueError:
-        shapes = ", ".join(f"{k} {v.shape}" for k, v in operands.items())
-        raise AbglibValueError(f"operands do not broadcast together: {shapes}") from None
+        listed = ", ".join(f"{k} {v}" for k, v in shapes.items())
+        raise AbglibValueError(f"operands do not broadcast together: {listed}") from None
+    operands = _TimeOperands(given, n)
 
     # the batched kernel needs gains and dt constant along time; it checks z's
     # finiteness itself (a sum per series), saving a pass over z
@@ -340,12 +357,12 @@ def track(
     if npoints:
         if n < npoints:
             raise AbglibValueError(f"init={init!r} needs at least {npoints} samples, got n={n}")
-        if not (operands["detected"][..., :npoints] != 0).all():
+        if detected is not None and not (operands["detected"][..., :npoints] != 0).all():
             raise AbglibValueError(
                 f"init={init!r} needs detections at samples 0..{npoints - 1}; "
                 "some are marked missed"
             )
-        if npoints == 3 and np.any(operands["gamma"] == 0.0):
+        if npoints == 3 and np.any(given["gamma"] == 0.0):
             raise AbglibValueError(
                 "init='three_point' estimates an acceleration that gamma=0 would never "
                 "correct; use init='two_point' for an alpha-beta tracker"
@@ -374,7 +391,8 @@ def track(
             # recycled memory of earlier outputs when large (abglib._buffers)
             buffers[name] = _buffers.empty(full)
     if order == 2 and "a_smooth" in user:
-        user["a_smooth"][...] = 0.0
+        # a previous alpha-beta result's untouched zero pages cost nothing to re-zero
+        _buffers.zero_fill(user["a_smooth"])
 
     if batched:
         _run_batched(order, given, operands, full, state0, npoints, has_det, buffers)
@@ -415,6 +433,10 @@ def _run_series(order, operands, full, state0, npoints, buffers):
 def _rows(arr: np.ndarray, batch: tuple) -> np.ndarray:
     """For each series of ``batch`` (flattened), its row in ``arr.reshape(-1, ...)``."""
     lead = arr.shape[:-1]
+    if lead == batch:  # one row per series, in order (read-only, as the broadcast below)
+        idx = np.arange(math.prod(lead), dtype=np.int64)
+        idx.flags.writeable = False
+        return idx
     idx = np.arange(math.prod(lead), dtype=np.int64).reshape(lead)
     return np.broadcast_to(idx, batch).ravel()
 
@@ -428,7 +450,9 @@ def _run_batched(order, given, operands, full, state0, npoints, has_det, buffers
 
     def per_series(name):
         arr = given[name]
-        return np.broadcast_to(arr if arr.ndim == 0 else arr[..., 0], batch).ravel()
+        if arr.ndim == 0:  # the same for every series: numpy broadcasts it into prm
+            return arr
+        return np.broadcast_to(arr[..., 0], batch).ravel()
 
     T = per_series("dt")
     prm = np.empty((nser, 5))

@@ -128,3 +128,44 @@ def test_zeros_are_zero_and_never_come_from_the_pool():
     assert z.shape == SHAPE and z.flags.writeable and not np.any(z)
     assert _buffers.pool_bytes() > 0  # the pooled block is still there, unused
     assert _buffers.zeros((3, 4)).shape == (3, 4)  # small: numpy's own
+
+
+def test_zero_fill_gives_back_only_a_whole_zeros_block(monkeypatch):
+    """zero_fill re-zeroes a whole zeros() block by giving its pages back (madvise), every
+    view of it sees zeros; part of a block, a pooled block or a numpy array is filled."""
+    calls = []
+    real = _buffers._ZeroMap.madvise
+
+    def spy(self, *args):
+        calls.append(args)
+        return real(self, *args)
+
+    monkeypatch.setattr(_buffers._ZeroMap, "madvise", spy)
+    z = _buffers.zeros(SHAPE)
+    z[...] = 7.0
+    view = z[::3, 5:]
+    _buffers.zero_fill(z)
+    assert calls and not np.any(z) and not np.any(view)
+    z[...] = 7.0
+    _buffers.zero_fill(z[:, ::1].reshape(-1))  # the same memory, another shape: whole
+    assert len(calls) == 2 and not np.any(z)
+    z[...] = 5.0
+    _buffers.zero_fill(z[:10])  # part of the block: filled, the rest untouched
+    assert len(calls) == 2 and not np.any(z[:10]) and np.all(z[10:] == 5.0)
+    for other in (_buffers.empty(SHAPE), np.empty(SHAPE), np.empty((3, 4))):
+        other[...] = 2.0
+        _buffers.zero_fill(other)
+        assert not np.any(other)
+    assert len(calls) == 2
+
+
+def test_alpha_beta_out_a_smooth_is_rezeroed_through_its_pages():
+    """A previous alpha-beta result handed back as out= (the benchmark's loop): its
+    a_smooth is zero again after the call even when the caller wrote into it."""
+    z = np.random.default_rng(8).normal(size=SHAPE).cumsum(axis=-1)
+    g = abglib.Gains(0.4, 0.1)
+    res = abglib.track(z, g)
+    res.a_smooth[3, 7] = 1.0
+    again = abglib.track(z, g, out=res)
+    assert again.a_smooth is res.a_smooth and not np.any(again.a_smooth)
+    np.testing.assert_array_equal(again.x_smooth, abglib.track(z, g).x_smooth)

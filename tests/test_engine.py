@@ -477,3 +477,106 @@ def test_alpha_beta_a_smooth_is_a_writeable_zero_array_at_every_size():
         other = track(zz, g, init="two_point").a_smooth
         assert not np.shares_memory(other, a)
         np.testing.assert_array_equal(again.x_smooth, track(zz, g, init="two_point").x_smooth)
+
+
+# --------------------------------------------------------------------------- exact bits
+# The kernels evaluate seed 000, eqs 1-6 in one fixed order without fast-math; these
+# tests hold every path to that order bit for bit (signs of zero included), against a
+# plain-Python transcription of it (Python floats are IEEE doubles, rounded per operation).
+
+
+def _exact_series(z, alpha, beta, gamma, dt, state, npoints, detected):
+    """One series in the kernels' own operation order (abglib._kernels._step3 / _step2)."""
+    T = float(dt)
+    h, b, c = 0.5 * T * T, beta / T, gamma / (T * T)
+    x, v, a = (float(s) for s in state)
+    order2 = npoints < 3 and gamma == 0.0 and a == 0.0
+    n = len(z)
+    out = np.zeros((4, n))
+    for i in range(n):
+        zi = float(z[i])
+        if i < npoints:  # seed 001, section 3: the measurements fix the state
+            z0, z1, z2 = float(z[0]), float(z[min(1, n - 1)]), float(z[min(2, n - 1)])
+            if i == 0:
+                x, v, a = z0, 0.0, 0.0
+            elif i == 1:
+                x, v, a = z1, (z1 - z0) / T, 0.0
+            else:
+                d1, d2 = (z1 - z0) / T, (z2 - z1) / T
+                a = 2.0 * (d2 - d1) / (T + T)
+                x, v = z2, d2 + 0.5 * a * T
+            x_p = zi
+        elif order2:
+            x_p = x + T * v
+            if detected is None or detected[i]:
+                r = zi - x_p
+                x, v = x_p + alpha * r, v + b * r
+            else:
+                x = x_p
+        else:
+            x_p = x + T * v + h * a
+            v_p = v + T * a
+            if detected is None or detected[i]:
+                r = zi - x_p
+                x, v, a = x_p + alpha * r, v_p + b * r, a + c * r
+            else:
+                x, v = x_p, v_p
+        out[:, i] = (x_p, x, v, a)
+    return out
+
+
+def _same_bits(got, want, what):
+    got, want = np.ascontiguousarray(got), np.ascontiguousarray(want)
+    same = got.view(np.uint64) == want.view(np.uint64)
+    if not same.all():
+        i = tuple(int(k) for k in np.argwhere(~same)[0])
+        raise AssertionError(f"{what}: {got[i]!r} != {want[i]!r} at {i}")
+
+
+@pytest.mark.parametrize("dt", [1.0, 0.1, 0.37])  # 1.0: the loop without T * v (exact there)
+@pytest.mark.parametrize("gains", ORDERS.values(), ids=ORDERS.keys())
+@pytest.mark.parametrize("init", ["zero", "two_point", "three_point", "state"])
+@pytest.mark.parametrize("with_det", [False, True])
+def test_every_path_gives_the_exact_bits_of_the_recursion(dt, gains, init, with_det):
+    """Random series (one alone: the single-series loop; 6: a block and two leftovers),
+    through the batched kernel and the per-series gufunc (a constant dt array), against
+    the plain-Python transcription, bit for bit."""
+    if init == "three_point" and gains[2] == 0.0:
+        return  # refused (test_batched_equals_per_series_bit_for_bit)
+    rng = np.random.default_rng(int(dt * 100) + 7 * with_det + len(init))
+    for runs in (1, 6):
+        n = 300
+        z = rng.normal(size=(runs, n)).cumsum(axis=-1) * 10.0 ** rng.uniform(-3, 3)
+        det = rng.uniform(size=(runs, n)) > 0.3 if with_det else None
+        if with_det:
+            det[:, :3] = True
+            z = np.where(det, z, np.nan)
+        state = np.zeros((runs, 3))
+        if init == "state":
+            state = rng.normal(size=(runs, 3))
+            if gains[2] == 0.0:
+                state[:, 2] = 0.0  # an alpha-beta state has no acceleration
+        npoints = {"zero": 0, "two_point": 2, "three_point": 3, "state": 0}[init]
+        how = state if init == "state" else init
+        g = Gains(*gains)
+        for label, step in (("batched", dt), ("per-series", np.full(n, dt))):
+            out = track(z, g, dt=step, init=how, detected=det)
+            for r in range(runs):
+                want = _exact_series(
+                    z[r], *gains, dt, state[r], npoints, None if det is None else det[r]
+                )
+                for k, name in enumerate(OUTPUTS):
+                    _same_bits(getattr(out, name)[r], want[k], f"{label} {name} run {r}")
+
+
+def test_single_series_unit_dt_matches_the_old_route_bit_for_bit():
+    """dt = 1 takes a loop without the multiplications by T (exact products): the same
+    bits as the per-series gufunc, which multiplies, on long random series of both orders."""
+    rng = np.random.default_rng(2026)
+    z = rng.normal(size=20_000).cumsum()
+    for gains in (Gains(0.45, 0.12), Gains(0.5, 0.2, 0.01)):
+        for init in ("zero", "two_point"):
+            new = track(z, gains, init=init)
+            old = track(z, gains, dt=np.ones(z.size), init=init)
+            for name in OUTPUTS:
+                _same_bits(getattr(new, name), getattr(old, name), name)
