@@ -87,14 +87,33 @@ def test_slug_and_link_check_catch_what_they_should(tmp_path):
     ]
 
 
-def test_readme_is_short_and_links_every_topic_page():
+def linked_pages(path: Path) -> set[Path]:
+    """The Markdown files one page links (relative links only)."""
+    found = set()
+    for target in LINK.findall(prose(path.read_text(encoding="utf-8"))):
+        file = target.partition("#")[0]
+        if file.endswith(".md") and not re.match(r"[a-z]+:", file):
+            found.add((path.parent / file).resolve())
+    return found
+
+
+def test_readme_is_short_and_every_topic_page_is_reached_from_it():
     text = README.read_text(encoding="utf-8")
     lines = text.count("\n")
     assert lines <= 200, f"README.md has {lines} lines: at most 200 (move a topic to docs/)"
-    linked = {Path(t.partition("#")[0]).name for t in LINK.findall(prose(text))}
-    topics = {p.name for p in DOCS.glob("*.md") if p.name not in NOT_PAGES}
-    topics -= {"overview.md"}  # the README itself, as a page of the site
-    assert topics <= linked, f"docs pages the README does not link: {sorted(topics - linked)}"
+    direct = {p.name for p in linked_pages(README)}
+    for topic in ("installation", "reading-reports", "extending", "releases", "performance"):
+        assert f"{topic}.md" in direct, f"the README does not link docs/{topic}.md"
+    reached, todo = set(), [README.resolve()]
+    while todo:  # every page of docs/ is one or more links away from the README
+        page = todo.pop()
+        if page not in reached and page.is_file():
+            reached.add(page)
+            todo.extend(linked_pages(page))
+    topics = {p.resolve() for p in DOCS.glob("*.md") if p.name not in NOT_PAGES}
+    topics.discard((DOCS / "overview.md").resolve())  # the README itself, as a page of the site
+    missed = sorted(p.name for p in topics - reached)
+    assert not missed, f"docs pages no link from the README leads to: {missed}"
 
 
 @pytest.mark.parametrize("page", pages(), ids=lambda p: str(p.relative_to(REPO)))
