@@ -22,7 +22,8 @@ from abglib.replications.antenna import (
     tracker_matrices,
     truncated_preview_u0,
 )
-from tests.antenna_common import DT, NOMINAL_VALUES
+
+from .antenna_common import DT, NOMINAL_VALUES
 
 NOMINAL = AntennaParams(**NOMINAL_VALUES)
 

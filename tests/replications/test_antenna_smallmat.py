@@ -14,7 +14,8 @@ from abglib.replications.antenna import (
 )
 from abglib.replications.antenna import kalman as kalman_mod
 from abglib.replications.antenna._smallmat import gauss_solve, matmul, matmul_nt, matmul_tn
-from tests.antenna_common import DT, NOMINAL_VALUES
+
+from .antenna_common import DT, NOMINAL_VALUES
 
 NOMINAL = AntennaParams(**NOMINAL_VALUES)
 VV = 1e-3 * np.eye(2)

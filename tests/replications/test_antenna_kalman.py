@@ -15,7 +15,8 @@ from abglib.replications.antenna import (
     kalman_riccati,
     taylor_model,
 )
-from tests.antenna_common import DT, NOMINAL_VALUES
+
+from .antenna_common import DT, NOMINAL_VALUES
 
 NOMINAL = AntennaParams(**NOMINAL_VALUES)
 VV = 1e-3 * np.eye(2)

@@ -9,7 +9,8 @@ from hypothesis import strategies as st
 
 from abglib._checks import AbglibValueError
 from abglib.replications.antenna import AntennaParams, continuous_model, discrete_plant, zoh
-from tests.antenna_common import NOMINAL_VALUES
+
+from .antenna_common import NOMINAL_VALUES
 
 # the reconstruction of config.yaml (antenna.parameters)
 NOMINAL = NOMINAL_VALUES

@@ -14,7 +14,8 @@ from abglib.replications.antenna import (
     spectral_radius,
     steady_state_amplitudes,
 )
-from tests.antenna_common import DT, NOMINAL_VALUES
+
+from .antenna_common import DT, NOMINAL_VALUES
 
 NOMINAL = AntennaParams(**NOMINAL_VALUES)
 VV = 1e-3 * np.eye(2)
