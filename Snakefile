@@ -16,6 +16,8 @@ include: "workflow/rules/benchmark.smk"
 include: "workflow/rules/antenna.smk"
 include: "workflow/rules/compare.smk"
 include: "workflow/rules/reports.smk"
+# last: defines every rule declared with script_rule above
+include: "workflow/rules/scripts.smk"
 
 
 rule all:

@@ -7,52 +7,28 @@ if "alwagih" in DOCS and not AW:
     raise WorkflowError("config lists alwagih in docs but has no alwagih section")
 
 
-rule alwagih_figures:
-    input:
-        tracks="results/alwagih/tracks.csv",
-        mc_rmse="results/alwagih/mc_rmse.csv",
-        table1="results/alwagih/table1.csv",
-        table2="results/alwagih/table2.csv",
-        causal="results/alwagih/causal.csv",
-    output:
-        fig5=report(
-            "results/alwagih/figures/fig5_tracks.png",
+script_rule(
+    "alwagih_figures",
+    "alwagih_figures.py",
+    input={
+        t: f"results/alwagih/{t}.csv"
+        for t in ("tracks", "mc_rmse", "table1", "table2", "causal")
+    },
+    output={
+        name: report(
+            f"results/alwagih/figures/{stem}.png",
             category="Al-Wagih",
             subcategory="Figures",
-            labels={"figure": "Figure 5"},
-        ),
-        fig6=report(
-            "results/alwagih/figures/fig6_tracks.png",
-            category="Al-Wagih",
-            subcategory="Figures",
-            labels={"figure": "Figure 6"},
-        ),
-        fig7=report(
-            "results/alwagih/figures/fig7_rmse.png",
-            category="Al-Wagih",
-            subcategory="Figures",
-            labels={"figure": "Figure 7"},
-        ),
-        fig8=report(
-            "results/alwagih/figures/fig8_rmse.png",
-            category="Al-Wagih",
-            subcategory="Figures",
-            labels={"figure": "Figure 8"},
-        ),
-        causal=report(
-            "results/alwagih/figures/causal.png",
-            category="Al-Wagih",
-            subcategory="Figures",
-            labels={"figure": "causal M5 and Kalman"},
-        ),
-    log:
-        "logs/alwagih/figures.log",
-    benchmark:
-        "benchmarks/results/alwagih/figures.tsv"
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        **script_params("alwagih_figures.py"),
-        dpi=config["figure_dpi"],
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+            labels={"figure": label},
+        )
+        for name, stem, label in (
+            ("fig5", "fig5_tracks", "Figure 5"),
+            ("fig6", "fig6_tracks", "Figure 6"),
+            ("fig7", "fig7_rmse", "Figure 7"),
+            ("fig8", "fig8_rmse", "Figure 8"),
+            ("causal", "causal", "causal M5 and Kalman"),
+        )
+    },
+    log="alwagih/figures",
+    params={"dpi": config["figure_dpi"]},
+)

@@ -7,27 +7,19 @@ if "antenna" in DOCS and not AN:
     raise WorkflowError("config lists antenna in docs but has no antenna section")
 
 
-rule antenna_figures:
-    input:
-        **{t: f"results/antenna/{t}.csv" for t in DOCUMENTS["antenna"]["tables"]},
-    output:
-        **{
-            f: report(
-                f"results/antenna/figures/{f}.png",
-                category="Tracking antenna",
-                subcategory="Figures",
-                labels={"figure": f},
-            )
-            for f in REPORT_CONTENT["antenna"]["figures"]
-        },
-    log:
-        "logs/antenna/figures.log",
-    benchmark:
-        "benchmarks/results/antenna/figures.tsv"
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        **script_params("antenna_figures.py"),
-        dpi=config["figure_dpi"],
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+script_rule(
+    "antenna_figures",
+    "antenna_figures.py",
+    input={t: f"results/antenna/{t}.csv" for t in DOCUMENTS["antenna"]["tables"]},
+    output={
+        f: report(
+            f"results/antenna/figures/{f}.png",
+            category="Tracking antenna",
+            subcategory="Figures",
+            labels={"figure": f},
+        )
+        for f in REPORT_CONTENT["antenna"]["figures"]
+    },
+    log="antenna/figures",
+    params={"dpi": config["figure_dpi"]},
+)

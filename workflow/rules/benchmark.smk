@@ -51,149 +51,138 @@ rule benchmark_cell:
         bench_cell(input, output, params, wildcards, threads, log)
 
 
-rule benchmark_league:
-    input:
-        cells=bench_cells(),
-    output:
-        league=report(
+script_rule(
+    "benchmark_league",
+    "benchmark_league.py",
+    input={"cells": bench_cells()},
+    output={
+        "league": report(
             "results/benchmark/league.csv",
             category="Benchmark",
             labels={"table": "league table"},
         ),
-        cells="results/benchmark/cells.csv",
-        tradeoff="results/benchmark/tradeoff.csv",
-        variants="results/benchmark/variants.csv",
-    log:
-        "logs/benchmark/league.log",
-    conda:
-        "../envs/abglib.yaml"
-    threads: 1
-    resources:
-        mem_mb=1000,
-        runtime=10,
-    params:
-        **script_params("benchmark_league.py"),
-        variants=BENCH_VARIANTS,
-        family_alpha=BENCH.get("family_alpha"),
-        family_size=BENCH.get("family_size"),
-        rank_by=BENCH.get("rank_by"),
-        digits=config["significant_digits"],
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+        "cells": "results/benchmark/cells.csv",
+        "tradeoff": "results/benchmark/tradeoff.csv",
+        "variants": "results/benchmark/variants.csv",
+    },
+    log="benchmark/league",
+    benchmark=False,
+    threads=1,
+    resources={"mem_mb": 1000, "runtime": 10},
+    params={
+        "variants": BENCH_VARIANTS,
+        "family_alpha": BENCH.get("family_alpha"),
+        "family_size": BENCH.get("family_size"),
+        "rank_by": BENCH.get("rank_by"),
+        "digits": config["significant_digits"],
+    },
+)
 
 
-rule benchmark_tradeoff:
-    input:
-        parquets=lambda wildcards: [
+script_rule(
+    "benchmark_tradeoff",
+    "benchmark_tradeoff.py",
+    input={
+        "parquets": lambda wildcards: [
             dataset_files(s)[0] for s in BENCH.get("tradeoff_scenarios", [])
-        ],
-    output:
-        curves="results/benchmark/tradeoff_curves.csv",
-    log:
-        "logs/benchmark/tradeoff.log",
-    conda:
-        "../envs/abglib.yaml"
-    threads: 1
-    resources:
-        mem_mb=2000,
-        runtime=20,
-    params:
-        **script_params("benchmark_tradeoff.py"),
-        families=BENCH.get("tradeoff_families"),
-        burn_in=BENCH.get("burn_in"),
-        init=BENCH.get("init"),
-        digits=config["significant_digits"],
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+        ]
+    },
+    output={"curves": "results/benchmark/tradeoff_curves.csv"},
+    log="benchmark/tradeoff",
+    benchmark=False,
+    threads=1,
+    resources={"mem_mb": 2000, "runtime": 20},
+    params={
+        "families": BENCH.get("tradeoff_families"),
+        "burn_in": BENCH.get("burn_in"),
+        "init": BENCH.get("init"),
+        "digits": config["significant_digits"],
+    },
+)
 
 
-rule benchmark_figures:
-    input:
-        league="results/benchmark/league.csv",
-        tradeoff="results/benchmark/tradeoff.csv",
-        curves="results/benchmark/tradeoff_curves.csv",
-    output:
-        heatmap=report(
+script_rule(
+    "benchmark_figures",
+    "benchmark_figures.py",
+    input={
+        "league": "results/benchmark/league.csv",
+        "tradeoff": "results/benchmark/tradeoff.csv",
+        "curves": "results/benchmark/tradeoff_curves.csv",
+    },
+    output={
+        "heatmap": report(
             "results/benchmark/figures/heatmap.png",
             category="Benchmark",
             labels={"figure": "heatmap"},
         ),
-        tradeoff=report(
+        "tradeoff": report(
             "results/benchmark/figures/tradeoff.png",
             category="Benchmark",
             labels={"figure": "noise versus lag"},
         ),
-    log:
-        "logs/benchmark/figures.log",
-    conda:
-        "../envs/abglib.yaml"
-    threads: 1
-    resources:
-        mem_mb=1000,
-        runtime=10,
-    params:
-        **script_params("benchmark_figures.py"),
-        dpi=config["figure_dpi"],
-        rank_by=BENCH.get("rank_by"),
-        tradeoff_scenarios=BENCH.get("tradeoff_scenarios"),
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+    },
+    log="benchmark/figures",
+    benchmark=False,
+    threads=1,
+    resources={"mem_mb": 1000, "runtime": 10},
+    params={
+        "dpi": config["figure_dpi"],
+        "rank_by": BENCH.get("rank_by"),
+        "tradeoff_scenarios": BENCH.get("tradeoff_scenarios"),
+    },
+)
 
 
-rule benchmark_peers:
-    output:
-        peers=report(
+script_rule(
+    "benchmark_peers",
+    "benchmark_peers.py",
+    output={
+        "peers": report(
             "results/benchmark/peers.csv",
             category="Benchmark",
             labels={"table": "peers"},
-        ),
-    log:
-        "logs/benchmark/peers.log",
-    conda:
-        "../envs/abglib.yaml"
-    threads: 1
-    resources:
-        mem_mb=1000,
-        runtime=10,
-    params:
-        **script_params("benchmark_peers.py"),
-        rtol=BENCH.get("peers", {}).get("rtol"),
-        seed=BENCH.get("peers", {}).get("seed"),
-        digits=config["significant_digits"],
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+        )
+    },
+    log="benchmark/peers",
+    benchmark=False,
+    threads=1,
+    resources={"mem_mb": 1000, "runtime": 10},
+    params={
+        "rtol": BENCH.get("peers", {}).get("rtol"),
+        "seed": BENCH.get("peers", {}).get("seed"),
+        "digits": config["significant_digits"],
+    },
+)
 
 
 # wall-clock timings: not byte-reproducible, kept out of the deterministic tables
-rule benchmark_speed:
-    input:
-        script=str(Path(workflow.basedir) / "benchmarks" / "engine_speed.py"),
-    output:
-        speed="results/benchmark/engine_speed.csv",
-    log:
-        "logs/benchmark/engine_speed.log",
-    conda:
-        "../envs/abglib.yaml"
-    threads: 1
-    resources:
-        mem_mb=2000,
-        runtime=10,
-    params:
-        **script_params("benchmark_speed.py"),
-        repeats=BENCH.get("speed", {}).get("repeats", 1),
-        run=BENCH.get("speed", {}).get("run", False),
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+script_rule(
+    "benchmark_speed",
+    "benchmark_speed.py",
+    input={"script": str(Path(workflow.basedir) / "benchmarks" / "engine_speed.py")},
+    output={"speed": "results/benchmark/engine_speed.csv"},
+    log="benchmark/engine_speed",
+    benchmark=False,
+    threads=1,
+    resources={"mem_mb": 2000, "runtime": 10},
+    params={
+        "repeats": BENCH.get("speed", {}).get("repeats", 1),
+        "run": BENCH.get("speed", {}).get("run", False),
+    },
+)
 
 
-rule benchmark_report:
-    input:
-        notebook=str(NOTEBOOKS / "benchmark.py"),
-        figures=[
+script_rule(
+    "benchmark_report",
+    "render_report.py",
+    NOTEBOOKS / "benchmark.py",
+    input={
+        "notebook": str(NOTEBOOKS / "benchmark.py"),
+        "figures": [
             "results/benchmark/figures/heatmap.png",
             "results/benchmark/figures/tradeoff.png",
         ],
-        tables=[
+        "tables": [
             "results/benchmark/league.csv",
             "results/benchmark/cells.csv",
             "results/benchmark/tradeoff.csv",
@@ -202,38 +191,28 @@ rule benchmark_report:
             "results/benchmark/peers.csv",
             "results/benchmark/engine_speed.csv",
         ],
-    output:
-        html=f"{REPORTS}/benchmark/index.html",
-        notebook=f"{REPORTS}/benchmark/notebook.py",
-        figures=expand(
+    },
+    output={
+        "html": f"{REPORTS}/benchmark/index.html",
+        "notebook": f"{REPORTS}/benchmark/notebook.py",
+        "figures": expand(
             f"{REPORTS}/benchmark/figures/{{f}}.png", f=["heatmap", "tradeoff"]
         ),
-        tables=expand(
+        "tables": expand(
             f"{REPORTS}/benchmark/tables/{{t}}.csv",
-            t=[
-                "league",
-                "cells",
-                "tradeoff",
-                "tradeoff_curves",
-                "variants",
-                "peers",
-            ],
+            t=["league", "cells", "tradeoff", "tradeoff_curves", "variants", "peers"],
         ),
-    log:
-        "logs/reports/benchmark.log",
-    conda:
-        "../envs/abglib.yaml"
-    threads: 1
-    resources:
-        mem_mb=2000,
-        runtime=20,
-    params:
-        **script_params("render_report.py", NOTEBOOKS / "benchmark.py"),
-        doc="benchmark",
-        version=VERSION,
-        repo=lambda wildcards, input: REPO,
-        timeout=config["notebook_timeout"],
-        page=lambda wildcards, input: REPORT_PAGE("benchmark", input),
-        settings={"rank_by": BENCH.get("rank_by")},
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+    },
+    log="reports/benchmark",
+    benchmark=False,
+    threads=1,
+    resources={"mem_mb": 2000, "runtime": 20},
+    params={
+        "doc": "benchmark",
+        "version": VERSION,
+        "repo": lambda wildcards, input: REPO,
+        "timeout": config["notebook_timeout"],
+        "page": lambda wildcards, input: REPORT_PAGE("benchmark", input),
+        "settings": {"rank_by": BENCH.get("rank_by")},
+    },
+)

@@ -141,6 +141,50 @@ def run_script(input, output, params, wildcards, threads, resources, log, rulena
     )
 
 
+# every script job of the workflow, by rule name; declared with script_rule in
+# the rule files, defined by the one rule block of scripts.smk (included last)
+SCRIPT_RULES = {}
+
+
+def script_rule(
+    name,
+    script,
+    *sources,
+    output,
+    log,
+    input=None,
+    params=None,
+    benchmark=True,
+    extra=(),
+    priority=0,
+    threads=None,
+    resources=None,
+):
+    """Declare the rule ``name`` that runs ``workflow/scripts/<script>`` (run_script).
+
+    Only what varies between such rules is given: ``input`` and ``output`` (named files),
+    ``params`` beyond ``script`` and ``code`` (script_params of ``script``, ``sources``
+    and ``extra``), the log's stem ``log`` (``logs/<log>.log``, and with ``benchmark``
+    the job's timing ``benchmarks/results/<log>.tsv``), and any ``priority``, ``threads``
+    and ``resources``. Every such rule gets the same conda environment and the same
+    ``run:`` (scripts.smk). Returns the declaration (its ``output`` stands for
+    ``rules.<name>.output``, which exists only once scripts.smk has run).
+    """
+    if name in SCRIPT_RULES:
+        raise WorkflowError(f"rule {name!r} is declared twice")
+    SCRIPT_RULES[name] = {
+        "input": dict(input or {}),
+        "output": dict(output),
+        "log": f"logs/{log}.log",
+        "benchmark": f"benchmarks/results/{log}.tsv" if benchmark else None,
+        "params": {**script_params(script, *sources, extra=extra), **(params or {})},
+        "priority": priority,
+        "threads": threads,
+        "resources": dict(resources or {}),
+    }
+    return SCRIPT_RULES[name]
+
+
 # per document: its title, tables and figures (DOCUMENTS, REPORT_CONTENT): documents.smk
 
 

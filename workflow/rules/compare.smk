@@ -2,22 +2,14 @@
 # each document's <doc>_reproduce rule writes.
 
 
-rule scorecard:
-    input:
-        comparisons=expand("results/{doc}/comparison.csv", doc=DOCS),
-    output:
-        scorecard=report("results/scorecard.csv", category="Comparison"),
-    log:
-        "logs/compare/scorecard.log",
-    benchmark:
-        "benchmarks/results/compare/scorecard.tsv"
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        **script_params("scorecard.py"),
-        digits=config["significant_digits"],
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+script_rule(
+    "scorecard",
+    "scorecard.py",
+    input={"comparisons": expand("results/{doc}/comparison.csv", doc=DOCS)},
+    output={"scorecard": report("results/scorecard.csv", category="Comparison")},
+    log="compare/scorecard",
+    params={"digits": config["significant_digits"]},
+)
 
 
 # Every table of a build and nothing else (no figures, no reports): what `abglib precision`
@@ -26,7 +18,7 @@ rule scorecard:
 rule tables:
     input:
         "results/scorecard.csv",
-        [getattr(rules, f"{doc}_study").output for doc in DOCS],
+        [list(SCRIPT_RULES[f"{doc}_study"]["output"].values()) for doc in DOCS],
         (
             expand("results/steelman1978/freqresp/{fig}.csv", fig=S78["figures"])
             if "steelman1978" in DOCS
@@ -34,9 +26,8 @@ rule tables:
         ),
         (
             [
-                rules.benchmark_league.output,
-                rules.benchmark_tradeoff.output,
-                rules.benchmark_peers.output,
+                list(SCRIPT_RULES[r]["output"].values())
+                for r in ("benchmark_league", "benchmark_tradeoff", "benchmark_peers")
             ]
             if BENCH
             else []

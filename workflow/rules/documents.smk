@@ -1,4 +1,6 @@
-# Every source document's study, claims and report rules, from one definition (issue 23).
+# Every source document's study, claims and report rules, from one definition (issue 23):
+# a loop over the documents declaring each rule (script_rule, common.smk; defined in
+# scripts.smk).
 #
 # A document is a folder abglib/replications/<doc>/ (study.py, claims.py, optionally
 # figures.py and report.py), its transcriptions data/published/<doc>/*.csv and a config
@@ -295,125 +297,87 @@ def report_page_of(doc):
 
 
 for doc, spec in DOCUMENTS.items():
-    study_cfg = doc_config(doc, *spec.get("sections", []))
-    claims_cfg = doc_config(doc, *spec.get("sections", []), "robustness")
     notebook = report_notebook(doc)
     settings = report_settings(doc)
-
     # the study's tables; its code hash covers abglib.replications.<doc>.study and what it
     # imports, not the claims, so editing a claim reruns only <doc>_claims
-    rule:
-        name:
-            f"{doc}_study"
-        input:
-            published=published_tables_of(doc),
-        output:
-            **{t: f"results/{doc}/{t}.csv" for t in spec["tables"]},
-        log:
-            f"logs/{doc}/study.log",
-        benchmark:
-            f"benchmarks/results/{doc}/study.tsv"
-        conda:
-            "../envs/abglib.yaml"
-        params:
-            **script_params("reproduce.py", f"abglib.replications.{doc}.study"),
-            doc=doc,
-            part="study",
-            cfg=study_cfg,
-            digits=config["significant_digits"],
-        run:
-            run_script(input, output, params, wildcards, threads, resources, log, rule)
-
+    script_rule(
+        f"{doc}_study",
+        "reproduce.py",
+        f"abglib.replications.{doc}.study",
+        input={"published": published_tables_of(doc)},
+        output={t: f"results/{doc}/{t}.csv" for t in spec["tables"]},
+        log=f"{doc}/study",
+        params={
+            "doc": doc,
+            "part": "study",
+            "cfg": doc_config(doc, *spec.get("sections", [])),
+            "digits": config["significant_digits"],
+        },
+    )
     # every published claim judged, and its robustness over the plausible ranges
-    rule:
-        name:
-            f"{doc}_claims"
-        input:
-            published=published_tables_of(doc),
-        output:
-            **claims_outputs(doc),
-        log:
-            f"logs/{doc}/claims.log",
-        benchmark:
-            f"benchmarks/results/{doc}/claims.tsv"
-        priority: spec.get("claims_priority", 0)
-        conda:
-            "../envs/abglib.yaml"
-        params:
-            **script_params("reproduce.py", f"abglib.replications.{doc}.claims"),
-            doc=doc,
-            part="claims",
-            cfg=claims_cfg,
-            overrides=config["tolerance_overrides"].get(doc, {}),
-            digits=config["significant_digits"],
-        run:
-            run_script(input, output, params, wildcards, threads, resources, log, rule)
-
+    script_rule(
+        f"{doc}_claims",
+        "reproduce.py",
+        f"abglib.replications.{doc}.claims",
+        input={"published": published_tables_of(doc)},
+        output=claims_outputs(doc),
+        log=f"{doc}/claims",
+        priority=spec.get("claims_priority", 0),
+        params={
+            "doc": doc,
+            "part": "claims",
+            "cfg": doc_config(doc, *spec.get("sections", []), "robustness"),
+            "overrides": config["tolerance_overrides"].get(doc, {}),
+            "digits": config["significant_digits"],
+        },
+    )
     if spec["figures"] and doc not in OWN_FIGURE_RULES:
-
-        # every figure of a document from its study's tables: its figures.py's
-        # figure(name, tables) (workflow/scripts/document_figures.py)
-        rule:
-            name:
-                f"{doc}_figures"
-            input:
-                **{t: f"results/{doc}/{t}.csv" for t in spec["tables"]},
-            output:
-                **{
-                    f: report(
-                        f"results/{doc}/figures/{f}.png",
-                        category=spec["title"],
-                        subcategory="Figures",
-                        labels={"figure": f},
-                    )
-                    for f in spec["figures"]
-                },
-            log:
-                f"logs/{doc}/figures.log",
-            benchmark:
-                f"benchmarks/results/{doc}/figures.tsv"
-            conda:
-                "../envs/abglib.yaml"
-            params:
-                **script_params(
-                    "document_figures.py", f"abglib.replications.{doc}.figures"
-                ),
-                doc=doc,
-                dpi=config["figure_dpi"],
-            run:
-                run_script(
-                    input, output, params, wildcards, threads, resources, log, rule
+        # every figure from the study's tables: its figures.py's figure(name, tables)
+        # (workflow/scripts/document_figures.py)
+        script_rule(
+            f"{doc}_figures",
+            "document_figures.py",
+            f"abglib.replications.{doc}.figures",
+            input={t: f"results/{doc}/{t}.csv" for t in spec["tables"]},
+            output={
+                f: report(
+                    f"results/{doc}/figures/{f}.png",
+                    category=spec["title"],
+                    subcategory="Figures",
+                    labels={"figure": f},
                 )
-
-    rule:
-        name:
-            spec.get("report_rule", f"{doc}_report")
-        input:
-            notebook=str(notebook),
-            figures=report_figures(doc),
-            tables=report_tables(doc),
-        output:
-            html=f"{REPORTS}/{doc}/index.html",
-            notebook=f"{REPORTS}/{doc}/notebook.py",
-            figures=expand(
+                for f in spec["figures"]
+            },
+            log=f"{doc}/figures",
+            params={"doc": doc, "dpi": config["figure_dpi"]},
+        )
+    script_rule(
+        spec.get("report_rule", f"{doc}_report"),
+        "render_report.py",
+        notebook,
+        input={
+            "notebook": str(notebook),
+            "figures": report_figures(doc),
+            "tables": report_tables(doc),
+        },
+        output={
+            "html": f"{REPORTS}/{doc}/index.html",
+            "notebook": f"{REPORTS}/{doc}/notebook.py",
+            "figures": expand(
                 f"{REPORTS}/{doc}/figures/{{f}}.png", f=REPORT_CONTENT[doc]["figures"]
             ),
-            tables=expand(
+            "tables": expand(
                 f"{REPORTS}/{doc}/tables/{{t}}.csv", t=REPORT_CONTENT[doc]["tables"]
             ),
-        log:
-            f"logs/reports/{doc}.log",
-        benchmark:
-            f"benchmarks/results/reports/{doc}.tsv"
-        conda:
-            "../envs/abglib.yaml"
-        params:
-            **script_params("render_report.py", notebook),
+        },
+        log=f"reports/{doc}",
+        params={
+            "doc": doc,
+            "version": VERSION,
+            "repo": lambda wildcards, input: REPO,
+            "timeout": config["notebook_timeout"],
+            "page": report_page_of(doc),
             **({"settings": settings} if settings else {}),
-            doc=doc,
-            version=VERSION,
-            repo=lambda wildcards, input: REPO,
-            timeout=config["notebook_timeout"],
-            page=report_page_of(doc),
-        run:
-            run_script(input, output, params, wildcards, threads, resources, log, rule)
+        },
+    )

@@ -7,38 +7,26 @@ if "faa_bendix" in DOCS and not FB:
     raise WorkflowError("config lists faa_bendix in docs but has no faa_bendix section")
 
 
-rule faa_bendix_figures:
-    input:
-        responses="results/faa_bendix/responses.csv",
-        damping_lags="results/faa_bendix/damping_lags.csv",
-        captions="results/faa_bendix/captions.csv",
-    output:
-        impulse=report(
-            "results/faa_bendix/figures/impulse.png",
+script_rule(
+    "faa_bendix_figures",
+    "faa_bendix_figures.py",
+    input={
+        t: f"results/faa_bendix/{t}.csv"
+        for t in ("responses", "damping_lags", "captions")
+    },
+    output={
+        f: report(
+            f"results/faa_bendix/figures/{f}.png",
             category="FAA Bendix",
             subcategory="Figures",
-            labels={"figure": "impulse"},
-        ),
-        ramp=report(
-            "results/faa_bendix/figures/ramp.png",
-            category="FAA Bendix",
-            subcategory="Figures",
-            labels={"figure": "ramp"},
-        ),
-        triangle=report(
-            "results/faa_bendix/figures/triangle.png",
-            category="FAA Bendix",
-            subcategory="Figures",
-            labels={"figure": "stability triangle"},
-        ),
-    log:
-        "logs/faa_bendix/figures.log",
-    benchmark:
-        "benchmarks/results/faa_bendix/figures.tsv"
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        **script_params("faa_bendix_figures.py"),
-        dpi=config["figure_dpi"],
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+            labels={"figure": label},
+        )
+        for f, label in (
+            ("impulse", "impulse"),
+            ("ramp", "ramp"),
+            ("triangle", "stability triangle"),
+        )
+    },
+    log="faa_bendix/figures",
+    params={"dpi": config["figure_dpi"]},
+)

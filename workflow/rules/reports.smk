@@ -3,8 +3,8 @@ from hashlib import sha256
 
 from abglib.reporting.pipeline import report_page
 
-# The version's index page (CONTRACTS.md §4). Each document's report rule lives in the
-# document's own .smk file.
+# The version's index page (CONTRACTS.md §4). Each document's report rule is declared in
+# documents.smk.
 
 # reports that replicate no source document, listed on the index after the documents
 EXTRA_REPORTS = (
@@ -21,50 +21,51 @@ REPORT_TITLES = {**DOC_TITLES, "benchmark": "Benchmark matrix"}
 REPORT_PAGE = partial(report_page, workflow, REPORT_ORDER, REPORT_TITLES)
 
 
-rule report_assets:
-    output:
-        css=f"{REPORTS}/assets/report.css",
-        js=f"{REPORTS}/assets/report.js",
-    log:
-        "logs/reports/assets.log",
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        **script_params("render_assets.py"),
+ASSETS = script_rule(
+    "report_assets",
+    "render_assets.py",
+    output={
+        "css": f"{REPORTS}/assets/report.css",
+        "js": f"{REPORTS}/assets/report.js",
+    },
+    log="reports/assets",
+    benchmark=False,
+    params={
         # the stylesheet and script themselves (not Python: hashed by content)
-        assets=sha256(
+        "assets": sha256(
             b"".join(
                 f.read_bytes()
                 for f in sorted((ABGLIB_DIR / "reporting/assets").glob("*"))
             )
         ).hexdigest(),
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+    },
+)
 
 
-rule report_index:
-    input:
-        scorecard="results/scorecard.csv",
-        reports=expand(f"{REPORTS}/{{doc}}/index.html", doc=DOCS),
-        others=bench_targets(),
-        assets=rules.report_assets.output,
-    output:
-        html=f"{REPORTS}/index.html",
-        scorecard=f"{REPORTS}/scorecard.csv",
-    log:
-        "logs/reports/index.log",
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        **script_params("render_index.py"),
-        docs=DOCS,
-        titles=DOC_TITLES,
-        extras=EXTRA_REPORTS,
-        order=REPORT_ORDER,
-        version=VERSION,
-        repo=lambda wildcards, input: REPO,
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+script_rule(
+    "report_index",
+    "render_index.py",
+    input={
+        "scorecard": "results/scorecard.csv",
+        "reports": expand(f"{REPORTS}/{{doc}}/index.html", doc=DOCS),
+        "others": bench_targets(),
+        "assets": list(ASSETS["output"].values()),
+    },
+    output={
+        "html": f"{REPORTS}/index.html",
+        "scorecard": f"{REPORTS}/scorecard.csv",
+    },
+    log="reports/index",
+    benchmark=False,
+    params={
+        "docs": DOCS,
+        "titles": DOC_TITLES,
+        "extras": EXTRA_REPORTS,
+        "order": REPORT_ORDER,
+        "version": VERSION,
+        "repo": lambda wildcards, input: REPO,
+    },
+)
 
 
 # ---------------------------------------------------------------- what changed (issue 13)
@@ -75,28 +76,26 @@ from abglib.reporting.versions import comparison_tables, previous_version
 CHANGES_PREVIOUS = previous_version(Path(workflow.basedir) / "reports", VERSION)
 
 
-rule changes:
-    input:
-        assets=rules.report_assets.output,
-        comparisons=expand("results/{doc}/comparison.csv", doc=DOCS),
-        previous=(
+script_rule(
+    "changes",
+    "changes.py",
+    input={
+        "assets": list(ASSETS["output"].values()),
+        "comparisons": expand("results/{doc}/comparison.csv", doc=DOCS),
+        "previous": (
             [str(p) for p in comparison_tables(CHANGES_PREVIOUS).values()]
             if CHANGES_PREVIOUS
             else []
         ),
-    output:
-        csv=f"{REPORTS}/changes.csv",
-        html=f"{REPORTS}/changes.html",
-    log:
-        "logs/reports/changes.log",
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        **script_params("changes.py"),
-        docs=DOCS,
-        version=VERSION,
-        previous=lambda wildcards, input: (
+    },
+    output={"csv": f"{REPORTS}/changes.csv", "html": f"{REPORTS}/changes.html"},
+    log="reports/changes",
+    benchmark=False,
+    params={
+        "docs": DOCS,
+        "version": VERSION,
+        "previous": lambda wildcards, input: (
             str(CHANGES_PREVIOUS) if CHANGES_PREVIOUS else None
         ),
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+    },
+)

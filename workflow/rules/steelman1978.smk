@@ -10,44 +10,35 @@ wildcard_constraints:
     fig="fig[1-6]",
 
 
-rule steelman_frequency_response:
-    output:
-        data="results/steelman1978/freqresp/{fig}.csv",
-    log:
-        "logs/steelman1978/frequency_response_{fig}.log",
-    benchmark:
-        "benchmarks/results/steelman1978/frequency_response_{fig}.tsv"
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        **script_params("frequency_response.py"),
-        figure=lambda wildcards: S78["figures"][wildcards.fig],
-        grids=S78["grids"],
-        digits=config["significant_digits"],
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+script_rule(
+    "steelman_frequency_response",
+    "frequency_response.py",
+    output={"data": "results/steelman1978/freqresp/{fig}.csv"},
+    log="steelman1978/frequency_response_{fig}",
+    params={
+        "figure": lambda wildcards: S78["figures"][wildcards.fig],
+        "grids": S78["grids"],
+        "digits": config["significant_digits"],
+    },
+)
 
 
-rule steelman_figure:
-    input:
-        data="results/steelman1978/freqresp/{fig}.csv",
-    output:
-        png=report(
+script_rule(
+    "steelman_figure",
+    "plot_frequency_response.py",
+    input={"data": "results/steelman1978/freqresp/{fig}.csv"},
+    output={
+        "png": report(
             "results/steelman1978/figures/{fig}.png",
             category="Steelman 1978",
             subcategory="Figures",
             labels={"figure": "{fig}"},
-        ),
-    log:
-        "logs/steelman1978/figure_{fig}.log",
-    benchmark:
-        "benchmarks/results/steelman1978/figure_{fig}.tsv"
-    conda:
-        "../envs/abglib.yaml"
-    params:
-        **script_params("plot_frequency_response.py"),
-        axes=lambda wildcards: S78["figures"][wildcards.fig]["axes"],
-        caption=lambda wildcards: S78["figures"][wildcards.fig]["caption"],
-        dpi=config["figure_dpi"],
-    run:
-        run_script(input, output, params, wildcards, threads, resources, log, rule)
+        )
+    },
+    log="steelman1978/figure_{fig}",
+    params={
+        "axes": lambda wildcards: S78["figures"][wildcards.fig]["axes"],
+        "caption": lambda wildcards: S78["figures"][wildcards.fig]["caption"],
+        "dpi": config["figure_dpi"],
+    },
+)
