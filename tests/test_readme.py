@@ -6,7 +6,7 @@ The README is for users (at most 200 lines); every topic it leaves out is a page
 the repository, and a ``#fragment`` one of that page's headings as GitHub (and MyST, with
 ``myst_heading_anchors``) writes it. The README's library example is a ``>>>`` session run
 here as a doctest, and ``docs/extending.md``'s table of design rules lists exactly the
-registered rules. The README's findings block is checked by ``tests/test_findings.py``.
+registered rules. The README's findings block is checked by ``tests/test_readme_findings.py``.
 """
 
 from __future__ import annotations

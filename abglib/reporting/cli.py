@@ -151,7 +151,7 @@ def release(build: Path, to: Path, force: bool = False) -> int:
 
 
 def findings(release: Path, readme: Path, template: Path, check: bool) -> int:
-    from .findings import update_readme
+    from .readme_findings import update_readme
 
     same = update_readme(readme, template, release, check=check)
     if check and not same:

@@ -1,4 +1,4 @@
-"""README findings formatted from a release's tables (abglib.reporting.findings)."""
+"""README findings formatted from a release's tables (abglib.reporting.readme_findings)."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import pytest
 
 from abglib import AbglibValueError, __version__
 from abglib.reporting.cli import main
-from abglib.reporting.findings import END, START, render_findings, update_readme
+from abglib.reporting.readme_findings import END, START, render_findings, update_readme
 
 from .conftest import require
 
