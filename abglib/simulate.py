@@ -14,6 +14,7 @@ __all__ = [
     "ar1_noise",
     "bendix_impulse",
     "bendix_ramp",
+    "polynomial_kinematics",
     "polynomial_track",
     "rng_from",
     "sample_times",
@@ -96,8 +97,32 @@ def bendix_ramp(n: int = 40, dt: float = 1.0, rise_samples: int = 10) -> np.ndar
     return z
 
 
+def polynomial_kinematics(t, x0=0.0, v0=0.0, a0=0.0, jerk=0.0):
+    """Exact position, velocity and acceleration of the cubic ``x0 + v0 t + a0 t^2/2 +
+    jerk t^3/6`` at times ``t`` (array (..., n)): the one home of the polynomial track
+    (the benchmark's ``polynomial`` scenarios, :mod:`abglib.bench.datasets`, take it).
+
+    Returns
+    -------
+    (pos, vel, acc) : float arrays shaped like ``t``.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 4-6 (the polynomial motion the tracker
+    models); Al-Wagih & Abdulla, seed 001 (``alwagih``), eq 1 (constant acceleration);
+    the velocity, acceleration and jerk inputs of Huang, Yang & Ma, seed 002 (``huang``)
+    (after eq 14).
+    """
+    t = np.asarray(t, dtype=float)
+    pos = x0 + v0 * t + 0.5 * a0 * t**2 + jerk * t**3 / 6.0
+    vel = v0 + a0 * t + 0.5 * jerk * t**2
+    acc = np.broadcast_to(a0 + jerk * t, t.shape).astype(float)
+    return pos, vel, acc
+
+
 def polynomial_track(t, x0=0.0, v0=0.0, a0=0.0, jerk=0.0) -> np.ndarray:
-    """Position ``x0 + v0 t + a0 t^2/2 + jerk t^3/6`` at times ``t`` (array (..., n)).
+    """Position ``x0 + v0 t + a0 t^2/2 + jerk t^3/6`` at times ``t`` (array (..., n)):
+    the position of :func:`polynomial_kinematics`.
 
     References
     ----------
@@ -105,8 +130,7 @@ def polynomial_track(t, x0=0.0, v0=0.0, a0=0.0, jerk=0.0) -> np.ndarray:
     models); the velocity, acceleration and jerk inputs of
     Huang, Yang & Ma, seed 002 (``huang``) (after eq 14).
     """
-    t = np.asarray(t, dtype=float)
-    return x0 + v0 * t + 0.5 * a0 * t**2 + jerk * t**3 / 6.0
+    return polynomial_kinematics(t, x0, v0, a0, jerk)[0]
 
 
 def white_noise(shape, sigma: float, seed) -> np.ndarray:

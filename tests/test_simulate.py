@@ -10,6 +10,7 @@ from abglib.simulate import (
     ar1_noise,
     bendix_impulse,
     bendix_ramp,
+    polynomial_kinematics,
     polynomial_track,
     sample_times,
     white_noise,
@@ -50,6 +51,27 @@ def test_noise_is_seeded_and_has_the_stated_statistics():
 def test_polynomial_track():
     t = sample_times(5, 0.5)
     np.testing.assert_allclose(polynomial_track(t, 1.0, 2.0, 4.0, 6.0), 1 + 2 * t + 2 * t**2 + t**3)
+
+
+def test_polynomial_kinematics_derivatives():
+    """Velocity and acceleration against the derivatives of the position written out by
+    hand (x = 1 + 2t + 2t^2 + t^3: v = 2 + 4t + 3t^2, a = 4 + 6t), and against central
+    differences of polynomial_track (exact to round-off for a cubic: the t^3 term's
+    truncation error is h^2 * jerk / 6 = 1e-6 for h = 1e-3, jerk = 6)."""
+    t = sample_times(7, 0.25)
+    pos, vel, acc = polynomial_kinematics(t, 1.0, 2.0, 4.0, 6.0)
+    np.testing.assert_allclose(pos, polynomial_track(t, 1.0, 2.0, 4.0, 6.0), rtol=0, atol=0)
+    np.testing.assert_allclose(vel, 2 + 4 * t + 3 * t**2, rtol=1e-15)
+    np.testing.assert_allclose(acc, 4 + 6 * t, rtol=1e-15)
+    h = 1e-3
+    central = (
+        polynomial_track(t + h, 1.0, 2.0, 4.0, 6.0) - polynomial_track(t - h, 1.0, 2.0, 4.0, 6.0)
+    ) / (2 * h)
+    np.testing.assert_allclose(central, vel, atol=2e-6)
+    # a constant velocity: the acceleration is an array of zeros shaped like t
+    _, vel0, acc0 = polynomial_kinematics(t, 0.0, 3.0)
+    assert acc0.shape == t.shape and not acc0.any()
+    np.testing.assert_array_equal(vel0, np.full_like(t, 3.0))
 
 
 @pytest.mark.parametrize(

@@ -58,7 +58,7 @@ from pathlib import Path
 import numpy as np
 
 from .._checks import AbglibValueError, check_finite, check_in_range, check_positive
-from ..simulate import ar1_noise, sample_times, white_noise
+from ..simulate import ar1_noise, polynomial_kinematics, sample_times, white_noise
 
 __all__ = [
     "BASE_COLUMNS",
@@ -230,14 +230,6 @@ def _pair_or_scalar(name: str, key: str, value, planar: bool):
 
 
 # --------------------------------------------------------------------------- kinematics
-def _polynomial(t, p0, v0, a0=0.0, jerk=0.0):
-    """Exact position, velocity, acceleration of a cubic (seed 001, eq 1 plus jerk)."""
-    pos = p0 + v0 * t + 0.5 * a0 * t**2 + jerk * t**3 / 6.0
-    vel = v0 + a0 * t + 0.5 * jerk * t**2
-    acc = a0 + jerk * t
-    return pos, vel, np.broadcast_to(acc, t.shape).astype(float)
-
-
 def _sinusoid(t, p0, v0, amplitude, period, phase):
     w = 2.0 * math.pi / period
     arg = w * t + phase
@@ -371,7 +363,9 @@ def _track(name: str, key: str, spec, t) -> dict:
     if kind == "sinusoid":
         period = float(check_positive(_where(name, f"tracks.{key}.period"), par["period"]))
         return {key: _sinusoid(t, par["p0"], par["v0"], par["amplitude"], period, par["phase"])}
-    return {key: _polynomial(t, **{k: v for k, v in par.items()})}
+    # constant velocity and acceleration are cubics with the higher terms zero
+    pva = polynomial_kinematics(t, par["p0"], par["v0"], par.get("a0", 0.0), par.get("jerk", 0.0))
+    return {key: pva}
 
 
 # --------------------------------------------------------------------------- public
