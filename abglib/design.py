@@ -47,7 +47,6 @@ from .gains import Gains
 __all__ = [
     "BENDIX_CAPTIONS",
     "BENDIX_MEMO",
-    "KALMAN_MODELS",
     "benedict_bordner",
     "bendix",
     "growing_memory",
@@ -1007,47 +1006,6 @@ def kalata_abg(tracking_index) -> Gains:
     return _gains(1.0 - s**2, 2.0 * (1.0 - s) ** 2, 2.0 * (1.0 - s) ** 3 / (1.0 + s))
 
 
-#: Process-noise models of :func:`steady_state_kalman`.
-KALMAN_MODELS = ("piecewise_constant", "piecewise_constant_jerk", "continuous")
-
-
-def _process_noise(order: int, model: str, T: float) -> np.ndarray:
-    """Process-noise covariance per unit ``q`` (see :func:`steady_state_kalman`)."""
-    if model == "piecewise_constant":
-        G = np.array([T**2 / 2, T]) if order == 2 else np.array([T**2 / 2, T, 1.0])
-        return np.outer(G, G)
-    if model == "piecewise_constant_jerk":
-        G = np.array([T**3 / 6, T**2 / 2, T])
-        return np.outer(G, G)
-    if order == 2:
-        return np.array([[T**3 / 3, T**2 / 2], [T**2 / 2, T]])
-    return np.array(
-        [
-            [T**5 / 20, T**4 / 8, T**3 / 6],
-            [T**4 / 8, T**3 / 3, T**2 / 2],
-            [T**3 / 6, T**2 / 2, T],
-        ]
-    )
-
-
-def _kalman_scalar(q: float, r: float, T: float, order: int, model: str) -> tuple:
-    if order == 2:
-        Phi = np.array([[1.0, T], [0.0, 1.0]])
-    else:
-        Phi = np.array([[1.0, T, T**2 / 2], [0.0, 1.0, T], [0.0, 0.0, 1.0]])
-    H = np.zeros((1, order))
-    H[0, 0] = 1.0
-    Q = q * _process_noise(order, model, T)
-    # filtering DARE (dual of the control one): P is the a-priori (predicted) covariance
-    from scipy.linalg import solve_discrete_are  # here: importing scipy costs ~0.3 s
-
-    P = solve_discrete_are(Phi.T, H.T, Q, np.array([[r]]))
-    K = (P @ H.T / (H @ P @ H.T + r)).ravel()  # a-posteriori (filter) gain
-    scale = np.array([1.0, T, T**2])[:order]  # K = [alpha, beta/T, gamma/T^2]
-    out = K * scale
-    return (out[0], out[1], out[2] if order == 3 else 0.0)
-
-
 def steady_state_kalman(q, r, dt=1.0, order=2, model="piecewise_constant") -> Gains:
     r"""Steady-state Kalman gains of a polynomial target model, from the DARE.
 
@@ -1081,7 +1039,7 @@ def steady_state_kalman(q, r, dt=1.0, order=2, model="piecewise_constant") -> Ga
     -----
     :math:`P^-` solves the filtering Riccati equation
     :math:`P = \Phi P \Phi^T - \Phi P H^T (H P H^T + r)^{-1} H P \Phi^T + Q`
-    (:func:`scipy.linalg.solve_discrete_are` with ``a = Phi.T``, ``b = H.T``). The
+    (:func:`abglib.analysis.kalman_gains`, one model at a time). The
     corrector of seed 000, eqs 1-3 is the Kalman update with gain
     :math:`[\alpha, \beta/T, \gamma/T^2]^T`. For ``"piecewise_constant"`` the result
     equals :func:`kalata_ab` / :func:`kalata_abg` with :math:`\Lambda = \sqrt{q}\,T^2 /
@@ -1098,6 +1056,8 @@ def steady_state_kalman(q, r, dt=1.0, order=2, model="piecewise_constant") -> Ga
     >>> round(g.alpha, 6), round(g.beta, 6)
     (0.75, 0.5)
     """
+    from .analysis import KALMAN_MODELS, kalman_gains  # here: the analysis imports scipy
+
     order = _check_order(order)
     model = _check_choice("model", model, KALMAN_MODELS)
     if model == "piecewise_constant_jerk" and order != 3:
@@ -1110,7 +1070,7 @@ def steady_state_kalman(q, r, dt=1.0, order=2, model="piecewise_constant") -> Ga
     q, r, T = np.broadcast_arrays(q, r, T)
     out = np.empty((3,) + q.shape)
     for idx in np.ndindex(q.shape):
-        out[(slice(None),) + idx] = _kalman_scalar(
+        out[(slice(None),) + idx] = kalman_gains(
             float(q[idx]), float(r[idx]), float(T[idx]), order, model
         )
     alpha, beta, gamma = out

@@ -19,6 +19,10 @@ Modules (one concept each; every public name is re-exported here):
     steady-state lag errors (seed 002)
 ``_enbw``
     equivalent noise bandwidth (seed 002 eq 8, one-sided) and a direct numeric route
+``_kalman``
+    the steady-state Kalman filter of a polynomial target model: process noise and the
+    discrete algebraic Riccati equation (the route of
+    :func:`abglib.design.steady_state_kalman`)
 
 Seed 002's printed forms (eqs 3, 5-7, 8-14, the steady-state lag formulas) live with
 their document in :mod:`abglib.replications.huang.printed`.
@@ -26,6 +30,7 @@ their document in :mod:`abglib.replications.huang.printed`.
 
 from ._enbw import *  # noqa: F403
 from ._features import *  # noqa: F403
+from ._kalman import *  # noqa: F403
 from ._stability import *  # noqa: F403
 from ._transfer import *  # noqa: F403
 from ._transient import *  # noqa: F403
