@@ -32,8 +32,8 @@ Reference rows (no target; they show what bounds the target rows on this machine
   the fewest operations numba compiles it to, no outputs stored, no checks: the speed
   of the recursion's dependency chain itself (each sample waits for the previous
   estimate), which no bit-identical single-series kernel can beat. Printed with the
-  latencies of a dependent add and a dependent multiply measured in the same round, and
-  the chain's length in those (docs/engine-speed.md explains it).
+  CPU-time latencies of a dependent add and a dependent multiply measured in the same
+  round, and the chain's length in those (docs/engine-speed.md explains it).
 
 Peers, on the same data and converted gains (:mod:`abglib.conventions`):
 
@@ -185,20 +185,20 @@ def _chain_call(z, gains: Gains, dt: float):
 
 
 def latencies(n: int = 10**7, calls: int = 5) -> tuple[float, float]:
-    """Seconds of one dependent float64 add and of one dependent multiply (the fastest
-    of ``calls`` loops of ``n``): the units the dependency chain is counted in."""
+    """CPU seconds of one dependent float64 add and of one dependent multiply (the
+    fastest of ``calls`` loops of ``n``): the units the dependency chain is counted in."""
     _dependent_adds(10, 1e-300)
     _dependent_muls(10, 1.0000000001)
-    add = min(_timed(lambda: _dependent_adds(n, 1e-300)) for _ in range(calls)) / n
-    mul = min(_timed(lambda: _dependent_muls(n, 1.0000000001)) for _ in range(calls)) / n
+    add = min(_cpu_timed(lambda: _dependent_adds(n, 1e-300)) for _ in range(calls)) / n
+    mul = min(_cpu_timed(lambda: _dependent_muls(n, 1.0000000001)) for _ in range(calls)) / n
     return add, mul
 
 
 # --------------------------------------------------------------------------- timing
-def _timed(fn) -> float:
-    t0 = time.perf_counter()
+def _cpu_timed(fn) -> float:
+    c0 = time.process_time()
     fn()
-    return time.perf_counter() - t0
+    return time.process_time() - c0
 
 
 def _calls(fn, calls: int) -> list[tuple[float, float]]:
@@ -437,8 +437,8 @@ def verdicts(df: pd.DataFrame) -> tuple[list[str], bool]:
         chain = per_round.loc[("single", filt, CHAIN)].median_rate
         adds = df[(df.case == "single") & (df["filter"] == filt)].groupby("round")
         add_s, mul_s = adds.add_s.first(), adds.mul_s.first()
-        chain_len = (1.0 / chain) / add_s
         chain_cpu = per_round.loc[("single", filt, CHAIN)].median_cpu_rate
+        chain_len = (1.0 / chain_cpu) / add_s  # CPU time over CPU time: waits left out
         for impl in (OUT_BUFFERS, FRESH, X_ONLY):
             rate = per_round.loc[("single", filt, impl)].median_rate
             frac = rate / chain
@@ -453,7 +453,7 @@ def verdicts(df: pd.DataFrame) -> tuple[list[str], bool]:
             f"  {filt:16} {CHAIN:40} round medians "
             f"{' '.join(f'{v:.3g}' for v in chain)} /s (CPU time "
             f"{' '.join(f'{v:.3g}' for v in chain_cpu)} /s): one sample = "
-            f"{' '.join(f'{v:.1f}' for v in chain_len)} dependent adds "
+            f"{' '.join(f'{v:.1f}' for v in chain_len)} dependent adds of CPU time "
             f"(add {' '.join(f'{1e9 * v:.2f}' for v in add_s)} ns, "
             f"multiply {' '.join(f'{1e9 * v:.2f}' for v in mul_s)} ns)"
         )
