@@ -206,6 +206,12 @@ def read_document(doc):
     optionally ``figures`` (drawn by its figures.py), ``sections`` (other top-level config
     sections its study reads) and ``report_tables`` (default: comparison, the tables,
     robustness)."""
+    reserved = {"benchmark", "assets", "datasets", "documents", *config}
+    if doc in reserved:
+        raise WorkflowError(
+            f"config docs lists {doc!r}, which names a config section or a report of its "
+            f"own (results/reports/v{VERSION}/{doc}); an added document needs another key"
+        )
     folder = REPLICATIONS / doc
     spec_file = folder / "document.yaml"
     if not spec_file.is_file():
