@@ -28,18 +28,22 @@ verdicts
     the reading catalogue with each family's look-elsewhere chance, vague words, and
     robustness over plausible inputs and random seeds.
 
-Layers installed with extras (``pip install "abglib[...]"``)
-------------------------------------------------------------
+Layers installed with extras (``pip install "abglib[...]"``), lowest first
+--------------------------------------------------------------------------
+common
+    (any extra) what the layers above the core share: deterministic tables, atomic
+    writes, a job's threads and log, the one figure style.
 bench
     (``[bench]``) simulated radar datasets, tracker variants, Monte Carlo cell metrics,
     league tables, agreement with peer libraries.
 replications
-    (``[replications]``) one folder per source document: printed forms, study, claims.
+    (``[replications]``) one folder per source document: printed forms, study, claims;
+    the published-versus-reproduced tables.
 reporting
-    (``[reporting]``) published-versus-reproduced tables, provenance, report rendering,
-    the shared figure style.
+    (``[reporting]``) provenance, report rendering, releases, the workflow's glue.
 
-The core (``pip install abglib``) needs numpy, scipy and numba only.
+The core (``pip install abglib``) needs numpy, scipy and numba only. Each layer imports
+only the ones below it (``docs/architecture.md``, ``tests/test_layers.py``).
 """
 
 from __future__ import annotations
@@ -57,6 +61,7 @@ __all__ = ["AbglibValueError", "Gains", "TrackResult", "__version__", "track"]
 _SUBMODULES = {
     "analysis",
     "bench",
+    "common",
     "conventions",
     "design",
     "methods",
