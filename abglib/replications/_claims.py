@@ -443,8 +443,31 @@ def evaluate(
 
     def under(k: int):
         if k not in seed_studies:
-            seed_studies[k] = make_study(seeded[k - 1])
+            cfg = (
+                seeded[k - 1]
+                if k <= len(seeded)
+                else robustness.seed_set(study.config, doc, k, design)
+            )
+            seed_studies[k] = make_study(cfg)
         return seed_studies[k]
+
+    def judge_chance(nominal_verdict, draws, by_set, pub, claim, point):
+        # the row's verdict under chance; while undecided, more seed sets at the nominal
+        # inputs (sets seed_sets + 1, ...), each shared by every row that needs it
+        lucky = robustness.chance_judgement(
+            nominal_verdict, draws, design.chance_tolerance, design.chance_confidence
+        )
+        k = len(seeded)
+        while lucky.state == "undecided" and len(draws) < design.chance_draws:
+            k += 1
+            v, rep = judged_at(under(k), pub, claim)[1:]
+            point("seed_set", "seeds", str(k), k, False, rep, v)
+            by_set.append((v, rep))
+            draws.append(v)
+            lucky = robustness.chance_judgement(
+                nominal_verdict, draws, design.chance_tolerance, design.chance_confidence
+            )
+        return lucky
 
     def judged_at(other_study, pub, claim):
         r = claim.run(other_study, pub.key)
@@ -574,9 +597,7 @@ def evaluate(
                 causes.append("inputs the document does not give")
             lucky = None
             if chance:
-                lucky = robustness.chance_judgement(
-                    nominal_verdict, scheduled_draws, design.chance_tolerance
-                )
+                lucky = judge_chance(nominal_verdict, scheduled_draws, by_set, pub, claim, point)
                 if not lucky.robust:
                     parts.append(
                         f"under chance it {lucky.describe()}; "
