@@ -817,12 +817,12 @@ class ChanceJudgement:
         conf = f"{100 * self.confidence:.0f} %"
         need = f"{100 * self.tolerance:.0f} %"
         if self.state == "robust":
-            what = f"rate < {100 * self.upper:.2g} % at {conf} confidence: robust to chance"
+            what = f"rate < {100 * self.upper:.2f} % at {conf} confidence: robust to chance"
         elif self.state == "fragile":
-            what = f"rate > {100 * self.lower:.2g} % at {conf} confidence: not robust to chance"
+            what = f"rate > {100 * self.lower:.2f} % at {conf} confidence: not robust to chance"
         else:
             what = (
-                f"rate between {100 * self.lower:.2g} and {100 * self.upper:.2g} % at {conf} "
+                f"rate between {100 * self.lower:.2f} and {100 * self.upper:.2f} % at {conf} "
                 f"confidence, undecided at the most draws: not robust to chance"
             )
         return (
