@@ -21,7 +21,9 @@
 # removes the symlink. Deleting the directory after `stop` leaves only the apt packages.
 #
 # The cluster: ClusterName abglib, node `localhost` (127.0.0.1) with this machine's CPUs and
-# memory (from `slurmd -C`), partition `debug` (default), account `ci` with root in it.
+# memory (from `slurmd -C`), partition `debug` (default) and `batch` (the same node, not the
+# default), account `ci` with root in it (root's default account stays `root`, so that a
+# test can tell SBATCH_ACCOUNT / SBATCH_PARTITION from the defaults).
 # Accounting runs through slurmdbd on MariaDB, so `sacct` answers as on a real cluster (the
 # Snakemake SLURM plugin polls job states with sacct; without it the workflow hangs).
 # EnforcePartLimits=ALL rejects a job that asks for more than the node has at submission
@@ -37,6 +39,7 @@ PORT=${ABGLIB_SLURM_PORT:-16817}
 TIMEOUT=${ABGLIB_SLURM_TIMEOUT:-60}
 CLUSTER=abglib
 PARTITION=debug
+PARTITION2=batch
 ACCOUNT=ci
 NODE=localhost
 PACKAGES=(slurm-wlm slurmdbd munge mariadb-server)
@@ -164,6 +167,7 @@ SlurmctldLogFile=$LOGS/slurmctld.log
 SlurmdLogFile=$LOGS/slurmd.log
 NodeName=$NODE NodeAddr=127.0.0.1 $hw State=UNKNOWN
 PartitionName=$PARTITION Nodes=$NODE Default=YES MaxTime=INFINITE State=UP
+PartitionName=$PARTITION2 Nodes=$NODE Default=NO MaxTime=INFINITE State=UP
 EOF
     if cmp -s "$ETC/slurm.conf.new" "$ETC/slurm.conf"; then
         rm "$ETC/slurm.conf.new"
