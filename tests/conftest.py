@@ -14,13 +14,30 @@ test collects ``tests/replications`` in a subprocess that way when its session d
 package that CI installs (Chromium, git, nbclient, filterpy, snakemake) skips without it on a
 developer's machine and fails under CI (``CI`` set to anything but ``""``, ``0``, ``false``
 or ``no``), so that a missing install cannot turn a check into a skip there.
+
+Speed (issue 24). ``pytest`` runs on every core (``-n auto --dist loadgroup``, pyproject.toml).
+Tests marked ``install``, ``slurm`` or ``docs`` run only when the ``-m`` expression names
+their marker (``pytest -m docs``), so that any other ``-m`` (the development loop
+``pytest -m "not slow"``) still leaves them out. ``pipeline`` and ``browser`` tests are
+``slow`` too. One small build (``small_build``: ``snakemake -c2`` of
+``tests/data/config_small.yaml``) is made once per session, shared by every xdist worker
+through a file lock (:func:`shared_dir`), and read, or copied and extended, by every test
+that needs a build; the tests that read it share an xdist group, so they run on one worker
+while the other runs unit tests.
 """
 
 from __future__ import annotations
 
+import contextlib
 import importlib
 import json
 import os
+import re
+import shutil
+import subprocess
+import sys
+import traceback
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -68,6 +85,17 @@ def claim_marks(items) -> dict[str, list[str]]:
     return {doc: sorted(keys) for doc, keys in sorted(out.items())}
 
 
+#: Markers whose tests run only when the ``-m`` expression names them (``pytest -m docs``).
+OPT_IN = ("install", "slurm", "docs")
+#: Markers that make a test ``slow`` (left out of the development loop ``-m "not slow"``).
+SLOW = ("pipeline", "browser", *OPT_IN)
+
+
+def opted_in(markexpr: str) -> set[str]:
+    """The :data:`OPT_IN` markers that the ``-m`` expression ``markexpr`` names."""
+    return {m for m in OPT_IN if re.search(rf"\b{m}\b", markexpr or "")}
+
+
 @pytest.hookimpl(tryfirst=True)
 def pytest_collection_modifyitems(session, config, items):
     session.stash[COLLECTED] = list(items)
@@ -76,3 +104,123 @@ def pytest_collection_modifyitems(session, config, items):
         modules = sorted({item.module.__name__ for item in items if hasattr(item, "module")})
         record = {"modules": modules, "claims": claim_marks(items)}
         Path(out).write_text(json.dumps(record), encoding="utf-8")
+    named = opted_in(config.option.markexpr)
+    keep, drop = [], []
+    for item in items:
+        marks = {m.name for m in item.iter_markers()}
+        if any(m in marks for m in SLOW) and "slow" not in marks:
+            item.add_marker(pytest.mark.slow)
+        # a module-scoped build (docs, slurm) stays on one xdist worker
+        for m in OPT_IN:
+            if m in marks and "xdist_group" not in marks:
+                item.add_marker(pytest.mark.xdist_group(m))
+        (drop if (marks & set(OPT_IN)) - named else keep).append(item)
+    if drop:
+        config.hook.pytest_deselected(items=drop)
+        items[:] = keep
+
+
+# ------------------------------------------------------------------ one build per session
+REPO = Path(__file__).resolve().parents[1]
+SMALL = REPO / "tests" / "data" / "config_small.yaml"
+SNAKEMAKE = Path(sys.executable).parent / "snakemake"
+#: The xdist group of the tests that read the small build (one worker runs them all).
+SMALL_BUILD = "small_build"
+
+
+def snakemake(workdir: Path, *args: str, configs=(SMALL,), env=None, snakefile=None):
+    """``snakemake -s <repo>/Snakefile -d workdir --configfile <configs> <args>``."""
+    exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
+    cmd = [exe, "-s", str(snakefile or REPO / "Snakefile"), "-d", str(workdir)]
+    cmd += ["--configfile", *map(str, configs), *args]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=900, env=env)
+
+
+@contextlib.contextmanager
+def _file_lock(path: Path):
+    """An exclusive lock on ``path`` (fcntl.flock; released when the file is closed)."""
+    import fcntl
+
+    with open(path, "a+") as f:
+        fcntl.flock(f, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(f, fcntl.LOCK_UN)
+
+
+def shared_dir(tmp_path_factory, name: str, build: Callable[[Path], None]) -> Path:
+    """``<session tmp>/<name>``, made once per test session by ``build(folder)``.
+
+    Under pytest-xdist every worker has its own basetemp below the session's folder; the
+    folder and a lock live in that common parent, so the first worker to ask builds and the
+    others wait for it and read the result (pytest-xdist's "Making session-scoped fixtures
+    execute only once"). A failed build is recorded: every later request fails with its
+    message instead of building again."""
+    root = tmp_path_factory.getbasetemp()
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        root = root.parent
+    folder, done, failed = root / name, root / f"{name}.done", root / f"{name}.failed"
+    with _file_lock(root / f"{name}.lock"):
+        if failed.exists():
+            pytest.fail(failed.read_text(encoding="utf-8"), pytrace=False)
+        if not done.exists():
+            if folder.exists():
+                shutil.rmtree(folder)
+            folder.mkdir()
+            try:
+                build(folder)
+            except BaseException as exc:
+                msg = f"building {name} failed (once for the session): {exc}"
+                failed.write_text(msg + "\n" + traceback.format_exc(), encoding="utf-8")
+                raise
+            done.write_text("built\n", encoding="utf-8")
+    return folder
+
+
+def copy_build(build: Path, dest: Path) -> Path:
+    """A copy of a finished build (results, logs and Snakemake's metadata, mtimes kept), in
+    which Snakemake schedules only what a change adds: extend the copy, never the original."""
+    shutil.copytree(build, dest, symlinks=True, ignore=shutil.ignore_patterns("locks"))
+    return dest
+
+
+#: What a build of this version must leave alone: an older version's report in its folder.
+OLD_REPORT = "<html>an older version's report</html>"
+
+
+def _seed_old_report(d: Path) -> None:
+    old = d / "reports" / "v0.0.0" / "steelman1978" / "index.html"
+    old.parent.mkdir(parents=True)
+    old.write_text(OLD_REPORT, encoding="utf-8")
+
+
+def _build(d: Path, *args: str, env=None) -> None:
+    _seed_old_report(d)
+    out = snakemake(d, "-c2", *args, env=env)
+    (d / "snakemake.out").write_text(out.stdout + out.stderr, encoding="utf-8")
+    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+
+
+@pytest.fixture(scope="session")
+def small_build(tmp_path_factory) -> Path:
+    """The whole small build (``snakemake -c2`` of tests/data/config_small.yaml) in a clean
+    working directory holding an older version's report (:data:`OLD_REPORT`), once per
+    session; its log in ``snakemake.out``. Read it, or :func:`copy_build` it to extend it."""
+    return shared_dir(tmp_path_factory, "small_build", _build)
+
+
+@pytest.fixture(scope="session")
+def perturbed_tables(tmp_path_factory) -> Path:
+    """The small config's tables again, with perturbed arithmetic (``ABGLIB_PERTURB``,
+    abglib._perturb: every float input of the numerical core moved by up to 7 ulps, what
+    another CPU, BLAS kernel or dependency set moves one operation by), in a clean working
+    directory, logging the scheduler's rounds (``--verbose``: "Ready jobs: N" once a round)."""
+    from abglib._perturb import ENV as PERTURB
+    from abglib.reporting import precision
+
+    def build(d: Path) -> None:
+        env = dict(os.environ, **{PERTURB: "1"})
+        _build(d, "--verbose", "--", *precision.TABLE_TARGETS, env=env)
+
+    return shared_dir(tmp_path_factory, "perturbed_tables", build)

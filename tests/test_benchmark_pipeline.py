@@ -9,6 +9,8 @@ import pandas as pd
 import pytest
 import yaml
 
+from .conftest import SMALL_BUILD, copy_build
+
 pytestmark = pytest.mark.pipeline
 
 REPO = Path(__file__).resolve().parents[1]
@@ -36,9 +38,14 @@ def _scheduled(stdout: str) -> dict:
     return jobs
 
 
-def test_new_variant_schedules_only_its_cells(tmp_path):
-    out = _snakemake(tmp_path, str(SMALL), "-c2", LEAGUE)
-    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+@pytest.mark.xdist_group(SMALL_BUILD)
+def test_new_variant_schedules_only_its_cells(tmp_path, small_build):
+    # the session's small build (its league included), copied: nothing of it reruns
+    copy_build(small_build, tmp_path / "build")
+    tmp_path = tmp_path / "build"
+    assert (tmp_path / LEAGUE).is_file()
+    same = _snakemake(tmp_path, str(SMALL), "-n", LEAGUE)
+    assert same.returncode == 0 and _scheduled(same.stdout) == {}, same.stdout[-3000:]
     small = yaml.safe_load(SMALL.read_text(encoding="utf-8"))
     scenarios = small["benchmark"]["scenarios"]
     extra = tmp_path / "extra.yaml"

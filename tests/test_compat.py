@@ -112,6 +112,7 @@ def tiny_run(tmp_path_factory):
     return json.loads((d / "report.json").read_text(encoding="utf-8")), d
 
 
+@pytest.mark.slow
 def test_snakemake_accessors_in_a_real_run(tiny_run):
     report, d = tiny_run
     assert report["rules"] == ["make", "scripted"]
@@ -126,6 +127,7 @@ def test_snakemake_accessors_in_a_real_run(tiny_run):
     assert report["value"] == 7
 
 
+@pytest.mark.slow
 def test_the_rate_limiter_is_really_switched_off(tiny_run):
     report, _ = tiny_run
     # the default --max-jobs-per-timespan (100/1s) gives a local run a limiter

@@ -74,6 +74,7 @@ def test_tolerance_override_needs_a_reason():
     assert "design.T" in msg and "'reason' is a required property" in msg
 
 
+@pytest.mark.slow
 def test_snakemake_reports_the_bad_key(tmp_path):
     exe = Path(sys.executable).parent / "snakemake"
     if shutil.which("snakemake") is None and not exe.exists():

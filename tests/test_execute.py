@@ -248,6 +248,7 @@ def test_render_notebook_injects_parameters_and_writes_the_page(tmp_path):
         render_notebook(src, html, {}, engine="papermill")
 
 
+@pytest.mark.slow
 def test_in_process_and_kernel_give_the_same_notebook(tmp_path):
     """The two engines agree output for output (nbclient and ipykernel: extra 'kernel')."""
     require_module("nbclient")  # skips without it; fails under CI

@@ -213,6 +213,7 @@ DOCS = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("doc", list(DOCS))
 def test_every_figure_has_alt_text_and_no_legend_or_label_over_data(doc, tmp_path):
     problems = []

@@ -64,6 +64,7 @@ def _read(tmp_path, name):
     return json.loads((tmp_path / f"{name}.json").read_text(encoding="utf-8"))
 
 
+@pytest.mark.slow
 def test_a_script_runs_in_a_fresh_process_of_its_own(script, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     run_script(script, _job(tmp_path, "a", value=2.5))
@@ -172,6 +173,7 @@ save_figure(fig, sys.argv[1])
 """
 
 
+@pytest.mark.slow
 def test_warm_figure_caches_change_no_pixel(tmp_path):
     # the fork server draws one figure first (load_figures); a job's figure must come out
     # byte for byte as it would in a fresh process

@@ -6,6 +6,10 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
+from .conftest import SMALL_BUILD, copy_build
+
 REPO = Path(__file__).resolve().parents[1]
 SNAKEMAKE = Path(sys.executable).parent / "snakemake"
 
@@ -15,12 +19,14 @@ def _run(*args):
     return subprocess.run([exe, *args], capture_output=True, text=True, cwd=REPO, timeout=300)
 
 
+@pytest.mark.slow
 def test_snakemake_lint_is_clean():
     out = _run("--lint")
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
     assert "Congratulations" in out.stdout + out.stderr
 
 
+@pytest.mark.slow
 def test_dry_run_writes_nothing_under_reports():
     """A plain build's every output lies outside the committed release reports/."""
     listing = _run("-n", "--forceall")
@@ -102,6 +108,7 @@ def _edit(path: Path, old: str, new: str) -> None:
     path.write_text(text.replace(old, new, 1), encoding="utf-8")
 
 
+@pytest.mark.pipeline
 def test_an_edit_reruns_only_the_jobs_whose_code_it_changes(tmp_path):
     import abglib
 
@@ -157,7 +164,9 @@ def my_tracker(dt, n_samples, window):
 '''
 
 
-def test_a_users_own_tracker_runs_in_the_matrix(tmp_path):
+@pytest.mark.pipeline
+@pytest.mark.xdist_group(SMALL_BUILD)
+def test_a_users_own_tracker_runs_in_the_matrix(tmp_path, small_build):
     import pandas as pd
 
     code = tmp_path / "elsewhere" / "my_trackers.py"
@@ -170,7 +179,8 @@ def test_a_users_own_tracker_runs_in_the_matrix(tmp_path):
         f"    mine_ma: {{callable: '{code}:my_tracker', window: 4, family: moving average}}\n",
         encoding="utf-8",
     )
-    work = tmp_path / "work"
+    # the session's small build, copied: only the user's cells and what reads them run
+    work = copy_build(small_build, tmp_path / "work")
     exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
     cmd = [exe, "-s", str(REPO / "Snakefile"), "-d", str(work), "--configfile", str(SMALL)]
     league = "results/benchmark/league.csv"
