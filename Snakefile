@@ -48,6 +48,6 @@ onerror:
         "\nThe build stopped: a job failed (its message and log are named above) or it was "
         "interrupted.\nTo resume, run `snakemake -c2` again: finished jobs are kept and "
         "interrupted ones rerun.\nAfter a killed build (SIGKILL, a crash) run "
-        "`snakemake --unlock` once first. See README, 'When a build is interrupted'.",
+        "`snakemake --unlock` once first. See docs/releases.md, 'When a build is interrupted'.",
         file=sys.stderr,
     )

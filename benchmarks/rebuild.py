@@ -11,7 +11,7 @@ Each case runs ``snakemake -c<cores>`` in a fresh working directory of its own (
 - ``clean``: the whole build (``snakemake -c2``) from nothing;
 - ``noop``: the same command again, which must report "Nothing to be done";
 - ``large``: the benchmark report of ``config/benchmark_large.yaml`` (every scenario, 10^4
-  runs per cell) merged over the config, from nothing, as the README runs it.
+  runs per cell) merged over the config, from nothing, as the README's quick start runs it.
 
 Writes ``benchmarks/results/rebuild.csv`` (one row per case: wall time, jobs, the issue's
 target) and ``benchmarks/results/rebuild_rules.csv`` (the clean build's time per rule, from

@@ -2,7 +2,7 @@
 # every scenario of config["benchmark"]["scenarios"] (datasets.smk), one job per cell;
 # the league table, heatmap and noise-versus-lag figure; the peers section; the report.
 # Every job reads only its input files and writes only its outputs, so the matrix runs
-# unchanged on a cluster through a Snakemake executor plugin (README).
+# unchanged on a cluster through a Snakemake executor plugin (docs/cluster.md).
 
 # The matrix's settings, checks and input functions are in common.smk.
 

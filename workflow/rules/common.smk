@@ -31,7 +31,7 @@ prepend_pythonpath(workflow.basedir)
 
 # the report version is the package version (CONTRACTS.md §4), never a config value. A build
 # writes its reports under results/; the committed release reports/v<version> is written
-# only by the deliberate `abglib release` (README), never by a build
+# only by the deliberate `abglib release` (docs/releases.md), never by a build
 VERSION = abglib.__version__
 REPORTS = f"results/reports/v{VERSION}"
 DOCS = config["docs"]
