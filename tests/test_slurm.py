@@ -1,47 +1,60 @@
 """The pipeline on a real SLURM cluster through the shipped profile (profiles/slurm).
 
-Runs the README's cluster command,
+``test_small_build_on_slurm_equals_local_run`` runs the README's cluster command,
 
     snakemake --profile profiles/slurm
 
-from the repository's root with the small config, in a scratch working directory and for
-a subset of targets, and the same targets locally with ``snakemake -c2``. Checks that every
-Snakemake job of the cluster run was submitted with sbatch and accounted by SLURM as
-COMPLETED under the profile's account and partition (one accounted SLURM job per Snakemake
-job, nothing else submitted under the run's job name), and that the two runs wrote
-byte-identical tables and datasets.
+from the repository's root with the whole small config (every target of a plain build),
+with SBATCH_ACCOUNT and SBATCH_PARTITION unset, in a scratch working directory, and the
+same build locally with ``snakemake -c2``, timing both. It checks that the cluster run
+submitted at most MAX_SLURM_JOBS SLURM jobs (the profile's groups: one per document, the
+dataset and cell parts two at a time, the benchmark and the index), each accounted by
+``sacct`` as COMPLETED under the user's default account (``sacctmgr``) and the cluster's
+default partition (``sinfo``), nothing else submitted under the run's name; that every
+Snakemake job of the local build ran on the cluster, none on the submitting machine; that
+the two builds wrote byte-identical tables and datasets.
+``test_small_build_on_slurm_within_twice_local_time`` checks issue 24's target on those
+two times, that the cluster run took at most MAX_RATIO times the local build; it is marked
+xfail: with snakemake-executor-plugin-slurm 2.8 it took 3.1 times (docs/cluster.md).
 
-The subset keeps the test's cost near a minute and a half on a 2-core node: every SLURM job
-pays about 10 s of Snakemake start-up twice (the plugin's job step, then the job under
-srun), so the 48 jobs of the whole small build would take over 5 minutes on two cores.
-It is one document's comparison (FAA Bendix, its tables and verdicts) and the benchmark
-league table, which needs the matrix's 4 cells, which need their 2 datasets: 8 jobs on
-three levels of dependencies.
+``test_profile_passes_sbatch_account_and_partition`` runs one small group (two datasets,
+one SLURM job) with SBATCH_ACCOUNT / SBATCH_PARTITION set to an account and a partition
+that are not the defaults (the loopback cluster's ``ci`` and ``batch``) and checks that
+SLURM accounted the job under them.
 
 Marker ``slurm``, deselected by default; ``.ci/run`` starts a one-node cluster
 (tools/slurm-cluster.sh) and runs ``pytest -m slurm``. Without a cluster it is skipped
-(it fails instead when ABGLIB_REQUIRE_SLURM=1, as .ci/run sets).
-Account and partition come from SBATCH_ACCOUNT and SBATCH_PARTITION, as in the README;
-unset, they are the loopback cluster's ``ci`` and ``debug``.
+(it fails instead when ABGLIB_REQUIRE_SLURM=1, as .ci/run sets). The measured times are
+printed (``pytest -s``) and named in the assertion messages; docs/cluster.md lists them.
 """
 
+import getpass
 import os
 import re
 import shutil
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
 
-pytestmark = pytest.mark.slurm
+# one xdist worker runs both, one after the other: the timed builds must not share the
+# machine with the second test's cluster run
+pytestmark = [pytest.mark.slurm, pytest.mark.xdist_group("slurm")]
 
 REPO = Path(__file__).resolve().parents[1]
 SMALL = REPO / "tests" / "data" / "config_small.yaml"
 BIN = Path(sys.executable).parent
-TARGETS = ["results/faa_bendix/comparison.csv", "results/benchmark/league.csv"]
-# the cluster run must end well inside CI's budget for this test (4 min)
-TIMEOUT_S = 420
+# issue 24: the small build as at most 15 SLURM jobs, in at most twice the local time
+MAX_SLURM_JOBS = 15
+MAX_RATIO = 2.0
+# each build must end well inside CI's budget for this test
+TIMEOUT_S = 1500
+# the two builds' wall times, for test_small_build_on_slurm_within_twice_local_time
+_TIMES: dict[str, float] = {}
+# the two datasets of test_profile_passes_sbatch_account_and_partition: one SLURM job
+DATASETS = ["results/datasets/alwagih_w2.parquet", "results/datasets/alwagih_w3.parquet"]
 
 
 def _exe(name: str) -> str:
@@ -76,67 +89,109 @@ def _cluster_or_skip() -> None:
         _no_cluster("the SLURM cluster has no partition up")
 
 
-def _snakemake(workdir: Path, *args: str, env=None) -> subprocess.CompletedProcess:
+def _env(**sbatch) -> dict:
+    """The environment without SBATCH_ACCOUNT / SBATCH_PARTITION, plus ``sbatch``."""
+    env = {k: v for k, v in os.environ.items() if k not in ("SBATCH_ACCOUNT", "SBATCH_PARTITION")}
+    return {**env, **sbatch}
+
+
+def _snakemake(workdir: Path, *args: str, env=None) -> tuple[subprocess.CompletedProcess, float]:
+    """Run snakemake with the small config in ``workdir``; the result and its wall time."""
     cmd = [
         "timeout", "-k", "30", str(TIMEOUT_S),
-        _exe("snakemake"), *args,
-        "--configfile", str(SMALL), "-d", str(workdir), *TARGETS,
+        _exe("snakemake"), *args, "--configfile", str(SMALL), "-d", str(workdir),
     ]  # fmt: skip
+    t0 = time.perf_counter()
     out = subprocess.run(cmd, cwd=REPO, capture_output=True, text=True, env=env)
+    seconds = time.perf_counter() - t0
     # snakemake waits for running jobs on SIGTERM; timeout's SIGKILL ends it (rc 124/137)
     assert out.returncode not in (124, 137), f"timed out after {TIMEOUT_S} s:\n" + (
         out.stdout[-3000:] + out.stderr[-3000:]
     )
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
-    return out
+    return out, seconds
+
+
+def _lines(*cmd: str) -> list[str]:
+    out = subprocess.run(cmd, capture_output=True, text=True, timeout=60, check=True)
+    return [line.strip() for line in out.stdout.splitlines() if line.strip()]
 
 
 def _sacct(*args: str) -> list[list[str]]:
-    out = subprocess.run(
-        ["sacct", "-n", "-X", "-P", *args], capture_output=True, text=True, timeout=60, check=True
+    return [line.split("|") for line in _lines("sacct", "-n", "-X", "-P", *args)]
+
+
+def _default_account() -> str:
+    """The user's default account, as SLURM's accounting database has it."""
+    (account,) = _lines(
+        "sacctmgr", "-n", "-P", "show", "user", getpass.getuser(), "format=defaultaccount"
     )
-    return [line.split("|") for line in out.stdout.splitlines() if line]
+    return account
 
 
-def test_pipeline_on_slurm_equals_local_run(tmp_path):
+def _partitions() -> tuple[str, list[str]]:
+    """The cluster's default partition (sinfo marks it with *) and all partitions."""
+    names = _lines("sinfo", "-h", "-o", "%P")
+    (default,) = [p.rstrip("*") for p in names if p.endswith("*")]
+    return default, [p.rstrip("*") for p in names]
+
+
+def _submitted(log: str) -> list[str]:
+    ids = re.findall(r"has been submitted with SLURM jobid (\d+)", log)
+    assert len(ids) == len(set(ids)), ids
+    return ids
+
+
+def test_small_build_on_slurm_equals_local_run(tmp_path):
     _cluster_or_skip()
-    account = os.environ.get("SBATCH_ACCOUNT", "ci")
-    partition = os.environ.get("SBATCH_PARTITION", "debug")
-    env = dict(os.environ, SBATCH_ACCOUNT=account, SBATCH_PARTITION=partition)
-
     local, cluster = tmp_path / "local", tmp_path / "slurm"
-    _snakemake(local, "-c2")
-    # the README's command
-    run = _snakemake(cluster, "--profile", "profiles/slurm", env=env)
+    _, t_local = _snakemake(local, "-c2")
+    # the README's command, with the account and partition left to SLURM's defaults
+    run, t_cluster = _snakemake(cluster, "--profile", "profiles/slurm", env=_env())
     log = run.stdout + run.stderr
+    _TIMES.update(local=t_local, cluster=t_cluster)
+    print(
+        f"\nsmall build: local -c2 {t_local:.1f} s, SLURM {t_cluster:.1f} s "
+        f"(ratio {t_cluster / t_local:.2f})"
+    )
 
-    # every job of the run was submitted to SLURM; none ran on the submitting machine
-    jobs = re.findall(r"^(local)?rule (\w+):$", log, flags=re.M)
+    # every Snakemake job went through sbatch inside a group job: the only job that ran
+    # on the submitting machine is the target rule `all` (no action); the run finished
+    # all of its jobs, as many as the plan of a local build of the same config
+    local_jobs = re.findall(r"^localrule (\w+):$", log, flags=re.M)
+    assert local_jobs == ["all"], local_jobs
     total = int(re.search(r"^total\s+(\d+)$", log, flags=re.M).group(1))
-    local_jobs = [name for is_local, name in jobs if is_local]
-    assert local_jobs == [], f"jobs that did not go through sbatch: {local_jobs}"
-    submitted = re.findall(r"has been submitted with SLURM jobid (\d+)", log)
-    assert total >= 8 and len(jobs) == total, (total, jobs)
-    assert len(submitted) == len(set(submitted)) == total, (total, submitted)
+    assert re.search(rf"^{total} of {total} steps \(100%\) done$", log, flags=re.M), log[-2000:]
+    dry = subprocess.run(
+        [_exe("snakemake"), "-n", "--configfile", str(SMALL), "-d", str(tmp_path / "plan")],
+        cwd=REPO, capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert dry.returncode == 0, dry.stderr[-2000:]
+    planned = int(re.search(r"^total\s+(\d+)$", dry.stdout + dry.stderr, flags=re.M).group(1))
+    assert total == planned > 40, (total, planned)
 
-    # ... and SLURM accounted each of them, finished, with the profile's account and
-    # partition; the plugin names every job of a run after the run, and nothing else was
-    # submitted under that name
+    # ... as at most MAX_SLURM_JOBS SLURM jobs, each accounted by SLURM as finished under
+    # the user's default account and the cluster's default partition; the plugin names
+    # every job of a run after the run, and nothing else was submitted under that name
+    submitted = _submitted(log)
+    print(f"small build: {total} Snakemake jobs in {len(submitted)} SLURM jobs")
+    assert 1 < len(submitted) <= MAX_SLURM_JOBS, submitted
     rows = _sacct("-j", ",".join(submitted), "-o", "JobID,JobName,State,Account,Partition")
     assert sorted(r[0] for r in rows) == sorted(submitted)
     assert {r[2] for r in rows} == {"COMPLETED"}, rows
-    assert {(r[3], r[4]) for r in rows} == {(account, partition)}, rows
+    default_partition, _ = _partitions()
+    assert {(r[3], r[4]) for r in rows} == {(_default_account(), default_partition)}, rows
     (run_name,) = {r[1] for r in rows}
     named = _sacct("--name", run_name, "-S", "now-1days", "-o", "JobID")
     assert sorted(r[0] for r in named) == sorted(submitted)
 
-    # the same tables and datasets as the local run, byte for byte
+    # the same tables and datasets as the local build, byte for byte
     files = sorted(
         p.relative_to(local)
         for p in (local / "results").rglob("*")
         if p.is_file() and p.suffix in (".csv", ".parquet", ".json")
     )
-    assert Path("results/faa_bendix/comparison.csv") in files
+    assert Path("results/scorecard.csv") in files
     assert len([f for f in files if f.parts[2:3] == ("cells",)]) >= 4, files
     different = [
         str(f)
@@ -144,3 +199,44 @@ def test_pipeline_on_slurm_equals_local_run(tmp_path):
         if not (cluster / f).is_file() or (cluster / f).read_bytes() != (local / f).read_bytes()
     ]
     assert different == []
+
+
+@pytest.mark.xfail(
+    reason="snakemake-executor-plugin-slurm 2.8 runs a group's jobs one at a time, each "
+    "with a Snakemake start of its own (docs/cluster.md, Groups): 3.1 x measured",
+    strict=False,
+)
+def test_small_build_on_slurm_within_twice_local_time():
+    """Issue 24's target for the builds timed by the test above (same worker, in order)."""
+    if not _TIMES:
+        pytest.skip("needs the timings of test_small_build_on_slurm_equals_local_run")
+    t_local, t_cluster = _TIMES["local"], _TIMES["cluster"]
+    assert t_cluster <= MAX_RATIO * t_local, (
+        f"the SLURM run took {t_cluster:.1f} s, {t_cluster / t_local:.2f} x the local "
+        f"build's {t_local:.1f} s (at most {MAX_RATIO} x)"
+    )
+
+
+def test_profile_passes_sbatch_account_and_partition(tmp_path):
+    _cluster_or_skip()
+    default_account = _default_account()
+    accounts = _lines(
+        "sacctmgr", "-n", "-P", "show", "assoc", f"user={getpass.getuser()}", "format=account"
+    )
+    default_partition, partitions = _partitions()
+    others = (
+        [a for a in accounts if a != default_account],
+        [p for p in partitions if p != default_partition],
+    )
+    if not all(others):
+        _no_cluster(
+            f"needs an account besides {default_account!r} and a partition besides "
+            f"{default_partition!r} (tools/slurm-cluster.sh makes `ci` and `batch`)"
+        )
+    account, partition = others[0][0], others[1][0]
+    env = _env(SBATCH_ACCOUNT=account, SBATCH_PARTITION=partition)
+    run, _ = _snakemake(tmp_path, "--profile", "profiles/slurm", *DATASETS, env=env)
+    submitted = _submitted(run.stdout + run.stderr)
+    assert len(submitted) == 1, submitted  # two datasets, one group job
+    rows = _sacct("-j", submitted[0], "-o", "JobID,State,Account,Partition")
+    assert rows == [[submitted[0], "COMPLETED", account, partition]], rows
