@@ -65,9 +65,12 @@ when every seed was shifted by 104729.
       verdict. The verdict is robust to chance when no draw contradicts it, or when the
       one-sided ``chance_confidence`` (95 %) Clopper-Pearson upper bound on that rate is
       below ``chance_tolerance`` (10 %: nine realisations in ten reproduce it); fragile
-      when the lower bound is above it; while undecided, the row gets more seed sets at
-      its nominal inputs, one at a time (:func:`seed_set`), up to ``chance_draws`` (150)
-      draws in all, and is fragile if still undecided there (:func:`chance_judgement`).
+      when the lower bound is above it; while undecided, the row gets one more draw at a
+      time, with seed sets beyond the design's (:func:`seed_set`), at the points where a
+      draw contradicted it, in turn (the rate is learnt where chance showed; extra draws
+      at the nominal inputs alone diluted it, and an Al-Wagih t-test row still flipped
+      under the shift 1299709), up to ``chance_draws`` (150) draws in all, and is fragile
+      if still undecided there (:func:`chance_judgement`).
       The note gives the draws and the bound whenever a draw contradicts.
 
     ``robust=true`` so means: the verdict holds at every point of every design, and
@@ -844,8 +847,9 @@ def chance_judgement(
     rate is below ``tolerance`` (``robustness.chance_tolerance``, 0.1: the referee's "nine
     realisations in ten reproduce it") at one-sided ``confidence``
     (``robustness.chance_confidence``, 0.95; Clopper-Pearson); fragile when above it; the
-    caller draws more seed sets at the nominal inputs while it is undecided
-    (``robustness.chance_draws`` in all at most) and calls an undecided row fragile.
+    caller draws more (new seed sets at the points where a draw contradicted) while it is
+    undecided (``robustness.chance_draws`` in all at most) and calls an undecided row
+    fragile.
 
     Why a rate, not "every draw agrees": a verdict that rests on one realisation of a
     random experiment (the Section 7 t-tests of Al-Wagih, one run per experiment) is a
