@@ -36,6 +36,7 @@ def _main_module_kept():
     yield
     sys.modules["__main__"] = main
 
+
 REPO = Path(__file__).resolve().parents[1]
 
 

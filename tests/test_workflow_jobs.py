@@ -21,6 +21,9 @@ from pathlib import Path
 import pytest
 import yaml
 
+# Snakemake dry runs of both configs (about 12 CPU-s): not in the fast loop
+pytestmark = pytest.mark.slow
+
 REPO = Path(__file__).resolve().parents[1]
 SNAKEMAKE = Path(sys.executable).parent / "snakemake"
 CONFIGS = {
