@@ -454,26 +454,19 @@ def evaluate(
             seed_studies[k] = make_study(config_of_set(k))
         return seed_studies[k]
 
-    def judge_chance(nominal_verdict, draws, by_set, mixed, pub, claim, point):
+    def judge_chance(nominal_verdict, draws, by_set, pub, claim, point):
         # the row's verdict under chance (abglib.verdicts.robustness.chance_judgement);
-        # while undecided, one more draw at a time, with seed sets beyond the design's
-        # (seed_sets + 1, ...), at the points where a draw contradicted the nominal verdict
-        # in turn (``mixed``: (design, input, value, values); the nominal inputs among them
-        # when a seed set there contradicted), so that the rate is learnt where chance
-        # showed, not diluted by draws where it never did; each study shared by every row
+        # while undecided, one more draw at a time at the nominal inputs, with seed sets
+        # beyond the design's (seed_sets + 1, ...), each study shared by every row
         lucky = robustness.chance_judgement(
             nominal_verdict, draws, design.chance_tolerance, design.chance_confidence
         )
-        where = list(mixed) or [("seed_set", "seeds", None, {})]
-        i = 0
+        k = len(seeded)
         while lucky.state == "undecided" and len(draws) < design.chance_draws:
-            design_name, names, shown, values = where[i % len(where)]
-            k = len(seeded) + 1 + i // len(where)
-            i += 1
-            v, rep = judged_at(at(values, k), pub, claim)[1:]
-            point(design_name, names, str(k) if shown is None else shown, k, False, rep, v)
-            if design_name == "seed_set":
-                by_set.append((v, rep))
+            k += 1
+            v, rep = judged_at(under(k), pub, claim)[1:]
+            point("seed_set", "seeds", str(k), k, False, rep, v)
+            by_set.append((v, rep))
             draws.append(v)
             lucky = robustness.chance_judgement(
                 nominal_verdict, draws, design.chance_tolerance, design.chance_confidence
@@ -518,7 +511,6 @@ def evaluate(
             chance = robustness.rests_on_chance(res, r1)
         confirm = design.confirm_draws if chance else 1
         scheduled_draws = [nominal_verdict]  # the draws the share under chance counts
-        mixed = []  # the points where a draw contradicts the nominal verdict (not a flip)
 
         def draws_at(
             design_name,
@@ -534,7 +526,6 @@ def evaluate(
             nominal_verdict=nominal_verdict,
             confirm=confirm,
             scheduled_draws=scheduled_draws,
-            mixed=mixed,
         ):
             # the scheduled draws of one design point and, for a Monte Carlo row whose
             # draws there contradict its nominal verdict, the confirmation draws
@@ -550,8 +541,6 @@ def evaluate(
             verdict = robustness.point_verdict(nominal_verdict, [v for v, _ in got], confirm)
             if verdict == nominal_verdict:
                 scheduled_draws.extend(v for v, _ in got[:per_point])
-                if any(v != nominal_verdict for v, _ in got):
-                    mixed.append((design_name, names, shown, values))
             return verdict
 
         # one at a time: each input over its grid, the others nominal
@@ -599,8 +588,6 @@ def evaluate(
             for k, (v, rep) in enumerate(by_set):
                 point("seed_set", "seeds", str(k), k, k == 0, rep, v)
             scheduled_draws.extend(v for v, _ in by_set[1:])
-            if any(v != nominal_verdict for v, _ in by_set):
-                mixed.append(("seed_set", "seeds", None, {}))
             row["depends_on"] = ";".join(x for x in (row["depends_on"], "seeds") if x)
         if inputs or by_set:
             parts = []
@@ -614,9 +601,7 @@ def evaluate(
                 causes.append("inputs the document does not give")
             lucky = None
             if chance:
-                lucky = judge_chance(
-                    nominal_verdict, scheduled_draws, by_set, mixed, pub, claim, point
-                )
+                lucky = judge_chance(nominal_verdict, scheduled_draws, by_set, pub, claim, point)
                 if not lucky.robust:
                     parts.append(
                         f"under chance it {lucky.describe()}; "
