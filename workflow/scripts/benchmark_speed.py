@@ -1,4 +1,5 @@
-"""Run benchmarks/engine_speed.py at its --quick size; timings are wall clock.
+"""Run benchmarks/engine_speed.py at its --quick size; timings are wall clock (the median
+of each row's calls over ``benchmark.speed.repeats`` rounds).
 
 The CSV is NOT byte-reproducible (timings vary run to run); the report shows it apart
 from the deterministic tables. With ``benchmark.speed.run: false`` an empty table is
@@ -22,9 +23,13 @@ def main(input, output, params, logger) -> None:
         spec = importlib.util.spec_from_file_location("engine_speed", input.script)
         mod = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(mod)
-        df = mod.run(quick=True, repeats=int(params.repeats))
-        worst = df.loc[df.implementation == "filterpy", "max_rel_diff"].max()
+        # one line per timed call, `repeats` rounds side by side with FilterPy; the report
+        # shows each row's median over its calls
+        calls = mod.run(quick=True, rounds=int(params.repeats))
+        worst = calls.loc[calls.implementation == "filterpy", "max_rel_diff"].max()
         logger.info("largest FilterPy/abglib relative difference: %.3g", worst)
+        keys = ["case", "filter", "implementation"]
+        df = calls.groupby(keys, sort=False)[COLUMNS[3:]].median().reset_index()[COLUMNS]
     with atomic_output(output.speed) as tmp:
         df.to_csv(tmp, index=False, float_format="%.3g")
 
