@@ -28,6 +28,21 @@ while the other runs unit tests.
 
 from __future__ import annotations
 
+import os as _os
+import tempfile as _tempfile
+
+# Each pytest-xdist worker compiles into its own numba cache (before numba is imported; the
+# builds a test starts inherit it). Two workers writing one cache at once on a cold clone
+# segfaulted a worker inside a cached gufunc (.ci/run, 2026-12-02: "Fatal Python error:
+# Segmentation fault" in abglib.engine.track, called through numba's gufunc __call__).
+# (A cache dir given by the caller, as tools/version-matrix.sh gives one, gets a folder per
+# worker inside it.)
+if _os.environ.get("PYTEST_XDIST_WORKER"):
+    _base = _os.environ.get("NUMBA_CACHE_DIR") or _os.path.join(
+        _tempfile.gettempdir(), f"abglib-numba-{_os.getuid()}"
+    )
+    _os.environ["NUMBA_CACHE_DIR"] = _os.path.join(_base, _os.environ["PYTEST_XDIST_WORKER"])
+
 import contextlib
 import importlib
 import json
