@@ -204,7 +204,7 @@ def test_small_build_on_slurm_equals_local_run(tmp_path):
 @pytest.mark.xfail(
     reason="snakemake-executor-plugin-slurm 2.8 runs a group's jobs one at a time, each "
     "with a Snakemake start of its own (docs/cluster.md, Groups): 3.1 x measured",
-    strict=False,
+    strict=True,
 )
 def test_small_build_on_slurm_within_twice_local_time():
     """Issue 24's target for the builds timed by the test above (same worker, in order)."""
