@@ -8,6 +8,7 @@
 #   tools/slurm-cluster.sh status    each daemon, the node, the account; exit 1 if one is down
 #   tools/slurm-cluster.sh stop      cancel leftover jobs, stop the daemons this script
 #                                    started, by the PIDs it recorded, and nothing else
+#   tools/slurm-cluster.sh link      only point /etc/slurm/slurm.conf here (start does it)
 #
 # Everything the cluster writes lives in one directory, $ABGLIB_SLURM_DIR (default
 # /tmp/abglib-slurm): configs (etc/), munge key and socket, the MariaDB data directory,
@@ -18,7 +19,10 @@
 # default path (snakemake-executor-plugin-slurm-jobstep 0.6.1 drops SLURM_CONF from the
 # environment of the `srun` it starts in every job; real clusters keep their config
 # there). `start` refuses to replace an /etc/slurm/slurm.conf it did not make, and `stop`
-# removes the symlink. Deleting the directory after `stop` leaves only the apt packages.
+# removes the symlink. A run killed before its `stop` (a CI job or session that ended in
+# the middle of the SLURM test) leaves the symlink behind, pointing at its own directory:
+# `start` takes such a link over when none of that cluster's daemons runs; when some still
+# run it stops them under CI=true and otherwise says how to. Deleting the directory after `stop` leaves only the apt packages.
 #
 # The cluster: ClusterName abglib, node `localhost` (127.0.0.1) with this machine's CPUs and
 # memory (from `slurmd -C`), partition `debug` (default) and `batch` (the same node, not the
@@ -31,7 +35,8 @@
 #
 # Knobs: ABGLIB_SLURM_DIR, ABGLIB_SLURM_PORT (first of four TCP ports on 127.0.0.1:
 # slurmctld, slurmd, slurmdbd, MariaDB; default 16817), ABGLIB_SLURM_TIMEOUT (seconds to
-# wait for each daemon, default 60).
+# wait for each daemon, default 60), ABGLIB_SLURM_DEFAULT_CONF (the path the jobs' Slurm
+# commands read, default /etc/slurm/slurm.conf; tests/test_slurm_cluster.py moves it).
 set -euo pipefail
 
 DIR=${ABGLIB_SLURM_DIR:-/tmp/abglib-slurm}
@@ -54,7 +59,7 @@ DB_RUN=$DIR/mariadb-run # the mysql user's: socket, pid file, error log, tempora
 DB_SOCKET=$DB_RUN/mariadb.sock
 DB_PORT=$((PORT + 3))
 DB_PASS=abglib-loopback # a database on 127.0.0.1 that lives as long as the directory
-DEFAULT_CONF=/etc/slurm/slurm.conf
+DEFAULT_CONF=${ABGLIB_SLURM_DEFAULT_CONF:-/etc/slurm/slurm.conf}
 # the daemons read their configs from here (slurmdbd finds slurmdbd.conf beside it)
 export SLURM_CONF=$ETC/slurm.conf
 
@@ -276,16 +281,54 @@ start_slurmd() {
 
 node_idle() { [[ $(sinfo -h -n "$NODE" -o %T 2>/dev/null) == idle* ]]; }
 
-do_start() {
-    [[ $(id -u) == 0 ]] || fail "run me as root (the daemons and the jobs run as root)"
-    do_install
-    mkdir -p "$DIR" "$ETC" "$PIDS" "$LOGS" "$DIR/slurmctld" "$DIR/slurmd"
-    chmod 755 "$DIR"
-    write_configs
+# abglib_cluster_of LINK -> the state directory of the cluster this script made that LINK
+# points to (a symlink to <dir>/etc/slurm.conf whose first line is this script's header and
+# whose ClusterName is ours); fails for anything else, a real file or another SLURM's config
+abglib_cluster_of() {
+    local target
+    [[ -L $1 && -f $1 ]] || return 1
+    target=$(readlink "$1")
+    [[ $target == /*/etc/slurm.conf ]] || return 1
+    [[ $(head -1 "$target") == "# written by tools/slurm-cluster.sh"* ]] || return 1
+    grep -qx "ClusterName=$CLUSTER" "$target" || return 1
+    echo "${target%/etc/slurm.conf}"
+}
+
+# live_daemons DIR -> the names of the daemons recorded in DIR/pid that still run; fails if none
+live_daemons() {
+    local name live=() PIDS=$1/pid
+    for name in "${DAEMONS[@]}"; do
+        running "$name" >/dev/null && live+=("$name")
+    done
+    ((${#live[@]})) || return 1
+    echo "${live[*]}"
+}
+
+# link_default_conf -> point $DEFAULT_CONF at this cluster's slurm.conf: kept if it already
+# does, replaced if it is the dangling or stale link of an earlier cluster of this script's,
+# refused for anything else (another SLURM's configuration is never touched)
+link_default_conf() {
+    local other live
     if [[ -L $DEFAULT_CONF && $(readlink "$DEFAULT_CONF") == "$SLURM_CONF" ]]; then
         :
     elif [[ -L $DEFAULT_CONF && ! -e $DEFAULT_CONF && $(readlink "$DEFAULT_CONF") == */etc/slurm.conf ]]; then
         say "replacing the dangling $DEFAULT_CONF of a cluster whose directory is gone"
+        ln -sfn "$SLURM_CONF" "$DEFAULT_CONF"
+    elif other=$(abglib_cluster_of "$DEFAULT_CONF"); then
+        # the symlink of an earlier cluster of this script's, in another directory, whose run
+        # was killed before its `stop` (a session or CI job ended mid-test leaves exactly this)
+        if live=$(live_daemons "$other"); then
+            if [[ ${CI:-} == true ]]; then
+                say "stopping the earlier abglib cluster in $other (still running: $live)"
+                ABGLIB_SLURM_DIR=$other bash "${BASH_SOURCE[0]}" stop
+            else
+                fail "an earlier abglib cluster in $other is still running ($live): stop it" \
+                    "first with ABGLIB_SLURM_DIR=$other $0 stop"
+            fi
+        else
+            say "replacing the stale $DEFAULT_CONF of an earlier abglib cluster in $other" \
+                "(none of its daemons runs)"
+        fi
         ln -sfn "$SLURM_CONF" "$DEFAULT_CONF"
     elif [[ -e $DEFAULT_CONF || -L $DEFAULT_CONF ]]; then
         fail "$DEFAULT_CONF exists and is not this cluster's: another SLURM is configured here"
@@ -293,6 +336,15 @@ do_start() {
         mkdir -p "$(dirname "$DEFAULT_CONF")"
         ln -s "$SLURM_CONF" "$DEFAULT_CONF"
     fi
+}
+
+do_start() {
+    [[ $(id -u) == 0 ]] || fail "run me as root (the daemons and the jobs run as root)"
+    do_install
+    mkdir -p "$DIR" "$ETC" "$PIDS" "$LOGS" "$DIR/slurmctld" "$DIR/slurmd"
+    chmod 755 "$DIR"
+    write_configs
+    link_default_conf
     start_munged
     start_mariadbd
     start_slurmdbd
@@ -356,11 +408,12 @@ do_status() {
 
 case ${1:-} in
 install) do_install ;;
+link) link_default_conf ;;
 start) do_start ;;
 stop) do_stop ;;
 status) do_status ;;
 *)
-    echo "usage: $0 install|start|status|stop" >&2
+    echo "usage: $0 install|start|status|stop|link" >&2
     exit 2
     ;;
 esac
