@@ -426,6 +426,10 @@ def evaluate(
     joint = robustness.joint_design(ranges, [c.inputs(k) for k, c in resolved.items()], design)
     seeded = robustness.seed_sets(study.config, doc, design)
     oat_sets, joint_sets = robustness.point_seed_sets(ranges, joint, len(seeded))
+    # every point of the document's designs numbered (0 the nominal inputs), for the seed
+    # sets of the extra draws under chance (robustness.extra_draws)
+    oat_ids = {key: 1 + i for i, key in enumerate(oat_sets)}
+    n_points = 1 + len(oat_sets) + len(joint)
     studies: dict[tuple, Any] = {}
 
     def at(values: Mapping[str, Any], k: int):
@@ -454,19 +458,28 @@ def evaluate(
             seed_studies[k] = make_study(config_of_set(k))
         return seed_studies[k]
 
-    def judge_chance(nominal_verdict, draws, by_set, pub, claim, point):
+    def judge_chance(nominal_verdict, draws, mixture, by_set, pub, claim, point):
         # the row's verdict under chance (abglib.verdicts.robustness.chance_judgement);
-        # while undecided, one more draw at a time at the nominal inputs, with seed sets
-        # beyond the design's (seed_sets + 1, ...), each study shared by every row
+        # while undecided, one more draw at a time over the row's mixture of points (its
+        # nominal inputs, then each design point that is not a flip, in turn) with seed
+        # sets beyond the design's (robustness.extra_draws), each study shared by every
+        # row drawn at the same point and set
         lucky = robustness.chance_judgement(
             nominal_verdict, draws, design.chance_tolerance, design.chance_confidence
         )
-        k = len(seeded)
+        j = 0
+        ids = [m[0] for m in mixture]
         while lucky.state == "undecided" and len(draws) < design.chance_draws:
-            k += 1
-            v, rep = judged_at(under(k), pub, claim)[1:]
-            point("seed_set", "seeds", str(k), k, False, rep, v)
-            by_set.append((v, rep))
+            ((i, k),) = robustness.extra_draws(ids, n_points, len(seeded), 1, start=j)
+            j += 1
+            if i == 0:
+                v, rep = judged_at(under(k), pub, claim)[1:]
+                point("seed_set", "seeds", str(k), k, False, rep, v)
+                by_set.append((v, rep))
+            else:
+                _, design_name, names, shown, values = mixture[i]
+                v, rep = judged_at(at(values, k), pub, claim)[1:]
+                point(design_name, names, shown, k, False, rep, v)
             draws.append(v)
             lucky = robustness.chance_judgement(
                 nominal_verdict, draws, design.chance_tolerance, design.chance_confidence
@@ -511,6 +524,10 @@ def evaluate(
             chance = robustness.rests_on_chance(res, r1)
         confirm = design.confirm_draws if chance else 1
         scheduled_draws = [nominal_verdict]  # the draws the share under chance counts
+        # the points those draws come from, each with its number among the document's
+        # points (0 the nominal inputs) and how to draw there: the nominal inputs, then
+        # every design point that is not a flip, where judge_chance's extra draws go in turn
+        mixture: list = [(0,)]
 
         def draws_at(
             design_name,
@@ -519,6 +536,7 @@ def evaluate(
             values,
             k0,
             per_point,
+            pid,
             *,
             pub=pub,
             claim=claim,
@@ -526,6 +544,7 @@ def evaluate(
             nominal_verdict=nominal_verdict,
             confirm=confirm,
             scheduled_draws=scheduled_draws,
+            mixture=mixture,
         ):
             # the scheduled draws of one design point and, for a Monte Carlo row whose
             # draws there contradict its nominal verdict, the confirmation draws
@@ -541,6 +560,7 @@ def evaluate(
             verdict = robustness.point_verdict(nominal_verdict, [v for v, _ in got], confirm)
             if verdict == nominal_verdict:
                 scheduled_draws.extend(v for v, _ in got[:per_point])
+                mixture.append((pid, design_name, names, shown, values))
             return verdict
 
         # one at a time: each input over its grid, the others nominal
@@ -561,8 +581,16 @@ def evaluate(
                     )
                     by_value.append((value, nominal_verdict))
                     continue
-                k0 = oat_sets[name, _hashable(value)]
-                v = draws_at("one_at_a_time", name, _fmt(value), {name: value}, k0, 1)
+                at_key = (name, _hashable(value))
+                v = draws_at(
+                    "one_at_a_time",
+                    name,
+                    _fmt(value),
+                    {name: value},
+                    oat_sets[at_key],
+                    1,
+                    oat_ids[at_key],
+                )
                 by_value.append((value, v))
             if len({v for _, v in by_value}) > 1:
                 flips.append(_describe_flip(rng, by_value))
@@ -571,7 +599,7 @@ def evaluate(
         # and the next ones in turn), any other row under the point's own
         per_point = design.joint_seed_sets if chance else 1
         by_point, seen = [], set()
-        for p, k0 in zip(joint, joint_sets, strict=True):
+        for i, (p, k0) in enumerate(zip(joint, joint_sets, strict=True)):
             proj = robustness.project(p, inputs)
             key = tuple((n, _hashable(v)) for n, v in proj)
             if len(proj) < 2 or key in seen:
@@ -579,7 +607,9 @@ def evaluate(
             seen.add(key)
             names = ";".join(n for n, _ in proj)
             shown = ";".join(_fmt(x) for _, x in proj)
-            by_point.append((proj, draws_at("joint", names, shown, p.values, k0, per_point)))
+            pid = 1 + len(oat_sets) + i
+            v = draws_at("joint", names, shown, p.values, k0, per_point, pid)
+            by_point.append((proj, v))
         # seed sets: a Monte Carlo row under every set at its nominal inputs
         by_set = []
         if chance:
@@ -601,7 +631,9 @@ def evaluate(
                 causes.append("inputs the document does not give")
             lucky = None
             if chance:
-                lucky = judge_chance(nominal_verdict, scheduled_draws, by_set, pub, claim, point)
+                lucky = judge_chance(
+                    nominal_verdict, scheduled_draws, mixture, by_set, pub, claim, point
+                )
                 if not lucky.robust:
                     parts.append(
                         f"under chance it {lucky.describe()}; "

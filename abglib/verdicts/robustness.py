@@ -62,26 +62,42 @@ when every seed was shifted by 104729.
     * *chance is a rate, bounded*: the row's scheduled draws (the configured seeds,
       every seed set at the nominal inputs, the scheduled draws of every design point
       that is not a flip) estimate the rate at which chance contradicts the nominal
-      verdict. The verdict is robust to chance when no draw contradicts it, or when the
-      one-sided ``chance_confidence`` (95 %) Clopper-Pearson upper bound on that rate is
-      below ``chance_tolerance`` (10 %: nine realisations in ten reproduce it); fragile
+      verdict over that mixture of points. The verdict is robust to chance when the
+      one-sided ``chance_confidence`` (99 %) Clopper-Pearson upper bound on that rate is
+      at most ``chance_tolerance`` (10 %: nine realisations in ten reproduce it), fragile
       when the lower bound is above it; while undecided, the row gets one more draw at a
-      time at its nominal inputs, with seed sets beyond the design's (:func:`seed_set`),
-      up to ``chance_draws`` (150) draws in all, and is fragile if still undecided there
-      (:func:`chance_judgement`). (The extra draws at the nominal inputs estimate a
-      mixture with the design's draws; drawing them where contradictions were instead
-      was tried and flipped more rows under shifted seeds, 3, 1 and 1 against 1, 0 and 0
-      for Al-Wagih: which points contradict is itself drawn.)
-      The note gives the draws and the bound whenever a draw contradicts.
+      time, at its nominal inputs and each of its design points that is not a flip in
+      turn, with seed sets beyond the design's (:func:`extra_draws`), up to
+      ``chance_draws`` (500) draws in all, and is fragile if still undecided there
+      (:func:`chance_judgement`). The note gives the draws and the bound whenever a draw
+      contradicts.
+
+    What the label so guarantees is computed, not assumed (:func:`robust_probability`,
+    exact, checked against a simulation): the row is looked at after every draw, so the
+    per-look 99 % is spent many times over; over the whole sequence a row contradicted
+    at the tolerance ends robust in at most about 6 % of rebuilds, whatever its number of
+    scheduled draws, at 12 % in about 1 %, and a row at 5 % ends robust in at least 98 %.
+    Between about 6 % and 9 % lies a band where the label is decided by the draws (50 %
+    near 7.5 %): a row whose rate lies there can be robust in one rebuild and fragile in
+    the next, and no finite number of draws removes the band, only narrows it.
+
+    History (every figure measured with all seeds shifted by 104729, 7919 and 1299709,
+    ``tools/seed-shift.py``): "every draw agrees" (v0.4.0) flipped 1, 7 and 5 Al-Wagih
+    rows marked ``robust=true``. A share against 10 % then flipped Huang's Figs 6-7
+    conclusion (40 of 42 draws agree under the configured seeds, 35 of 42 with 7919).
+    v0.4.1's bound (95 % a look, 150 draws, extras at the nominal inputs, and no
+    contradiction at all counted as robust) flipped one Al-Wagih row under 1299709
+    (Table 4, M1 vs M3, Y: 1 % contradicted at its nominal inputs, about a quarter at
+    the joint points with ``m1_alpha = 0.01``, robust by a hair at 134 of 142) and,
+    once the extras went over the whole mixture, Huang's Figs 6-7 conclusion (85 of 89,
+    bound 9.99 %, then undecided at 150 under 7919 and 1299709). Its robust label was
+    also weaker than it read: a row at 10 % was robust in 13 % of rebuilds with 46
+    scheduled draws and in 59 % with 6, since 6 agreeing draws counted as robust
+    (``0.9**6 = 53 %``). v0.4.2's rule is the one above.
 
     ``robust=true`` so means: the verdict holds at every point of every design, and
-    chance contradicts it in fewer than one draw in ten, known at 95 % confidence. A
-    point estimate against the tolerance (tried first) still flipped Huang's Figs 6-7
-    conclusion (40 of 42 draws agree under the configured seeds, 35 of 42 with every
-    seed shifted by 7919: a rate near the tolerance); with the bound a row so near it is
-    drawn until its side is known. Only a row whose rate lies just under the tolerance
-    can still change between rebuilds (by simulation: a rate of 2.4 % is robust in more
-    than 99 % of rebuilds, 15 % in fewer than 2 %; ``tests/test_robustness.py``).
+    chance contradicts it in fewer than one draw in ten, by a sequential bound whose
+    error over the whole sequence is known.
 
 ``seed_set``
     the document's config with every random seed it reads moved together
@@ -108,6 +124,7 @@ This module imports the core and numpy/scipy only (the layering of
 from __future__ import annotations
 
 import copy
+import functools
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
@@ -189,8 +206,8 @@ DEFAULTS = {
     "design_seed": 20_261_201,
     "confirm_draws": 3,
     "chance_tolerance": 0.1,
-    "chance_confidence": 0.95,
-    "chance_draws": 150,
+    "chance_confidence": 0.99,
+    "chance_draws": 500,
 }
 
 # allowed ranges of the keys (the schema's; the message names them)
@@ -257,10 +274,12 @@ class Design:
         nominal verdict for the verdict to count as robust to chance
         (:func:`chance_judgement`).
     chance_confidence : float
-        One-sided confidence of the bounds on that share's complement (Clopper-Pearson).
+        One-sided confidence of the Clopper-Pearson bounds on the contradiction rate, at
+        each look (the row is looked at after every draw: :func:`robust_probability`
+        gives what the whole sequence guarantees).
     chance_draws : int
         The most draws a Monte Carlo row whose verdict under chance is undecided is
-        judged over (more seed sets at its nominal inputs, :func:`seed_set`).
+        judged over (more draws over its mixture of points, :func:`extra_draws`).
     """
 
     seed_sets: int = DEFAULTS["seed_sets"]
@@ -802,9 +821,14 @@ class ChanceJudgement:
 
     @property
     def state(self) -> str:
-        """``robust`` (no draw contradicts, or the rate is below the tolerance at the
-        confidence), ``fragile`` (above it at the confidence) or ``undecided``."""
-        if self.contradictions == 0 or self.upper <= self.tolerance:
+        """``robust`` (the rate is below the tolerance at the confidence), ``fragile``
+        (above it at the confidence) or ``undecided``.
+
+        No draw contradicting is not enough by itself: 6 agreeing draws bound the rate
+        only below 39 % at 95 %, and a row contradicted at 10 % agrees in 6 of 6 draws in
+        53 % of rebuilds (v0.4.1 called such a row robust); with the defaults a row needs
+        44 agreeing draws (``0.9**44 < 0.01``)."""
+        if self.upper <= self.tolerance:
             return "robust"
         if self.lower > self.tolerance:
             return "fragile"
@@ -815,7 +839,7 @@ class ChanceJudgement:
         return self.state == "robust"
 
     def describe(self) -> str:
-        """``'holds in 50 of 51 draws (98 %; contradicted at a rate < 8.9 % at 95 %
+        """``'holds in 63 of 64 draws (98 %; contradicted at a rate < 9.93 % at 99 %
         confidence: robust to chance, which needs < 10 %)'``."""
         pct = f"{100 * self.share:.0f} %"
         conf = f"{100 * self.confidence:.0f} %"
@@ -836,7 +860,10 @@ class ChanceJudgement:
 
 
 def chance_judgement(
-    nominal: str, verdicts: Sequence[str], tolerance: float, confidence: float = 0.95
+    nominal: str,
+    verdicts: Sequence[str],
+    tolerance: float,
+    confidence: float = DEFAULTS["chance_confidence"],
 ) -> ChanceJudgement:
     """Whether a Monte Carlo row's nominal verdict survives chance.
 
@@ -844,12 +871,13 @@ def chance_judgement(
     at its nominal inputs, and the first :func:`draws_of_point` draws at each design point
     that is not a flip by the inputs (:func:`point_verdict`; confirmation draws are left
     out, since they are drawn only after a contradiction and would bias the rate). The
-    verdict is robust to chance when no draw contradicts it, or when its contradiction
-    rate is below ``tolerance`` (``robustness.chance_tolerance``, 0.1: the referee's "nine
-    realisations in ten reproduce it") at one-sided ``confidence``
-    (``robustness.chance_confidence``, 0.95; Clopper-Pearson); fragile when above it; the
-    caller draws more seed sets at the nominal inputs while it is undecided
-    (``robustness.chance_draws`` in all at most) and calls an undecided row fragile.
+    verdict is robust to chance when its contradiction rate is below ``tolerance``
+    (``robustness.chance_tolerance``, 0.1: the referee's "nine realisations in ten
+    reproduce it") at one-sided ``confidence`` (``robustness.chance_confidence``, 0.99
+    a look; Clopper-Pearson), fragile when above it; the
+    caller draws more while it is undecided, over the same mixture of points
+    (:func:`extra_draws`; ``robustness.chance_draws`` in all at most) and calls an
+    undecided row fragile.
 
     Why a rate, not "every draw agrees": a verdict that rests on one realisation of a
     random experiment (the Section 7 t-tests of Al-Wagih, one run per experiment) is a
@@ -861,11 +889,135 @@ def chance_judgement(
     it (Huang, Figs 6-7 conclusion: 40 of 42 draws agree under the configured seeds, 35
     of 42 with every seed shifted by 7919). With the bound, such a row is drawn until its
     rate is known to lie on one side; a row robust in one build can be fragile in another
-    only when its rate lies just under the tolerance.
+    only when its rate lies in the band below the tolerance that
+    :func:`robust_probability` computes.
     """
     verdicts = list(verdicts)
     agree = sum(v == nominal for v in verdicts)
     return ChanceJudgement(agree, len(verdicts), float(tolerance), float(confidence))
+
+
+@functools.lru_cache(maxsize=4096)
+def _looks(n: int, tolerance: float, confidence: float) -> tuple[int, int]:
+    """At ``n`` draws, the most contradictions that are robust (-1: none is) and the
+    fewest that are fragile (``n + 1``: none is), by :class:`ChanceJudgement` itself."""
+
+    def state(x: int) -> str:
+        return ChanceJudgement(n - x, n, tolerance, confidence).state
+
+    # both bounds grow with x: robust for x <= r, fragile for x >= f (bisection)
+    lo, hi = -1, n  # state(lo) robust or lo = -1; state(hi + 1) not robust or hi = n
+    while lo < hi:
+        mid = (lo + hi + 1) // 2
+        lo, hi = (mid, hi) if state(mid) == "robust" else (lo, mid - 1)
+    r = lo
+    lo, hi = r + 1, n + 1  # the fewest fragile in (r, n], n + 1 when none is
+    while lo < hi:
+        mid = (lo + hi) // 2
+        lo, hi = (lo, mid) if state(mid) == "fragile" else (mid + 1, hi)
+    f = lo
+    return r, f
+
+
+def robust_probability(
+    rate: float, scheduled: int, design: Design | None = None
+) -> tuple[float, float]:
+    """How often the rule under chance calls a row robust, exactly.
+
+    A Monte Carlo row contradicted at ``rate`` per draw, with ``scheduled`` draws before
+    the first look (:func:`chance_judgement`), is looked at after every further draw
+    until it is robust or fragile or has ``design.chance_draws`` draws (then it is
+    fragile). Looking after every draw spends the per-look ``chance_confidence`` many
+    times over, so this computes what the whole sequence does: the probability that the
+    row ends robust, by dynamic programming over (draws, contradictions), and the
+    expected number of draws it takes. Checked against a simulation of the sequence
+    in ``tests/test_robustness.py``.
+
+    With the defaults (10 %, 99 % per look, at most 500 draws) a row at the tolerance is
+    robust in at most about 6 % of rebuilds whatever its scheduled draws (at 95 % per
+    look and 150 draws, the v0.4.1 rule, 13 % with 46 scheduled draws, and 59 % with 6
+    since no contradiction counted as robust); a row at 5 % in at least 98 %; between
+    them lies the band where the label is a toss of the draws (50 % near 7.5 %).
+
+    Parameters
+    ----------
+    rate : float
+        Per-draw contradiction rate, in [0, 1].
+    scheduled : int
+        Draws before the first look (at least 1, at most ``design.chance_draws``).
+    design : Design, optional
+        The tolerance, confidence and cap (default :data:`DEFAULTS`).
+
+    Returns
+    -------
+    (probability robust, expected draws)
+    """
+    from scipy.stats import binom
+
+    d = design or Design()
+    cap = d.chance_draws
+    if not 0.0 <= rate <= 1.0:
+        raise AbglibValueError(f"rate must satisfy 0 <= rate <= 1, got {rate}")
+    if not 1 <= scheduled <= cap:
+        raise AbglibValueError(f"scheduled must satisfy 1 <= scheduled <= {cap}, got {scheduled}")
+    dist = binom.pmf(np.arange(scheduled + 1), scheduled, rate)
+    robust = drawn = 0.0
+    for n in range(scheduled, cap + 1):
+        # at most r contradictions: robust; at least f: fragile (_looks)
+        r, f = _looks(n, d.chance_tolerance, d.chance_confidence)
+        robust += dist[: r + 1].sum()
+        drawn += n * (dist[: r + 1].sum() + dist[f:].sum())
+        dist[: r + 1] = 0.0
+        dist[f:] = 0.0
+        if n == cap:
+            drawn += n * dist.sum()  # undecided at the most draws: fragile
+            break
+        dist = np.append(dist * (1.0 - rate), 0.0) + np.append(0.0, dist * rate)
+    return float(robust), float(drawn)
+
+
+def extra_draws(
+    point_ids: Sequence[int], n_points: int, n_sets: int, count: int, start: int = 0
+) -> list[tuple[int, int]]:
+    """Where and with which seed set a Monte Carlo row undecided under chance is drawn
+    again (:func:`chance_judgement`).
+
+    The row's scheduled draws estimate its contradiction rate over a mixture: its nominal
+    inputs and every design point that is not a flip by the inputs (``point_ids``: each
+    point's number among the document's ``n_points`` points, 0 the nominal inputs). The
+    extra draws continue that same mixture, so that however many are needed the rate
+    they bound is one quantity: the ``j``-th extra draw (``j = start, start + 1, ...``)
+    is the ``r = j // len(point_ids)``-th extra visit of point ``i = j mod
+    len(point_ids)``, drawn with seed set ``n_sets + 1 + r * n_points + point_ids[i]``:
+    a set no design point was drawn with (:func:`seed_set`), a different one for every
+    visit of every point (so the draws are independent), and the same for every row
+    that visits that point that often (so the rows share the study).
+
+    Why not elsewhere (measured with every seed shifted by 104729, 7919 and 1299709):
+    extra draws at the nominal inputs alone (v0.4.1) bounded a mixture that moved
+    towards the nominal inputs' rate as draws were added. An Al-Wagih row (Table 4, M1
+    vs M3, Y), contradicted at 1 % of the draws there but at about a quarter of them at
+    the joint points with ``m1_alpha = 0.01``, was so robust by a hair (134 of 142
+    draws, bound 9.94 %) under the configured seeds and fragile under the shift
+    1299709. Extra draws only where contradictions were (tried) are chosen by the draws
+    themselves and flipped more rows (3, 1, 1 against 1, 0, 0).
+
+    Returns
+    -------
+    list of (index into ``point_ids``, seed set)
+    """
+    m = len(point_ids)
+    if m < 1:
+        raise AbglibValueError("extra draws need at least one point, got none")
+    bad = [p for p in point_ids if not 0 <= p < n_points]
+    if bad:
+        raise AbglibValueError(f"point ids must satisfy 0 <= id < {n_points}, got {bad}")
+    if count < 0 or start < 0:
+        raise AbglibValueError(f"extra draws need count >= 0 and start >= 0, got {count}, {start}")
+    return [
+        (j % m, n_sets + 1 + (j // m) * n_points + point_ids[j % m])
+        for j in range(start, start + count)
+    ]
 
 
 def seed_set(config: Mapping, doc: str, k: int, design: Design) -> dict:
