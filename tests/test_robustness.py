@@ -823,3 +823,16 @@ def test_bad_chance_settings_name_the_value_and_the_allowed_range(spec, match):
         R.settings({"robustness": spec})
     d = R.settings({"robustness": {"chance_tolerance": 0.05, "confirm_draws": 2}})
     assert (d.chance_tolerance, d.confirm_draws) == (0.05, 2)
+
+
+def test_describe_seed_sets_names_the_sets_drawn():
+    d = R.Design()
+    assert R.describe_seed_sets(["m", "x", "m"], d) == (
+        "under 2 seed sets besides the configured one (set 0; set k moves every seed by "
+        "k x 1000003): m under sets 0, 2, x under set 1"
+    )
+    # the extra draws at the nominal inputs are drawn with sets further apart
+    text = R.describe_seed_sets(["m", "m", "x"], d, [0, 1, 15])
+    assert text.endswith("m under sets 0, 1, x under set 15")
+    with pytest.raises(AbglibValueError, match="one seed set per verdict: 2 sets, 3"):
+        R.describe_seed_sets(["m", "m", "x"], d, [0, 1])

@@ -475,7 +475,7 @@ def evaluate(
             if i == 0:
                 v, rep = judged_at(under(k), pub, claim)[1:]
                 point("seed_set", "seeds", str(k), k, False, rep, v)
-                by_set.append((v, rep))
+                by_set.append((v, rep, k))
             else:
                 _, design_name, names, shown, values = mixture[i]
                 v, rep = judged_at(at(values, k), pub, claim)[1:]
@@ -610,14 +610,15 @@ def evaluate(
             pid = 1 + len(oat_sets) + i
             v = draws_at("joint", names, shown, p.values, k0, per_point, pid)
             by_point.append((proj, v))
-        # seed sets: a Monte Carlo row under every set at its nominal inputs
+        # seed sets: a Monte Carlo row under every set at its nominal inputs, as
+        # (verdict, reproduced, set)
         by_set = []
         if chance:
-            by_set = [(nominal_verdict, row["reproduced"]), (v1, rep1)]
-            by_set += [judged_at(under(k), pub, claim)[1:] for k in range(2, len(seeded) + 1)]
-            for k, (v, rep) in enumerate(by_set):
+            by_set = [(nominal_verdict, row["reproduced"], 0), (v1, rep1, 1)]
+            by_set += [(*judged_at(under(k), pub, claim)[1:], k) for k in range(2, len(seeded) + 1)]
+            for v, rep, k in by_set:
                 point("seed_set", "seeds", str(k), k, k == 0, rep, v)
-            scheduled_draws.extend(v for v, _ in by_set[1:])
+            scheduled_draws.extend(v for v, _, _ in by_set[1:])
             row["depends_on"] = ";".join(x for x in (row["depends_on"], "seeds") if x)
         if inputs or by_set:
             parts = []
@@ -637,7 +638,9 @@ def evaluate(
                 if not lucky.robust:
                     parts.append(
                         f"under chance it {lucky.describe()}; "
-                        + robustness.describe_seed_sets([v for v, _ in by_set], design)
+                        + robustness.describe_seed_sets(
+                            [v for v, _, _ in by_set], design, [k for _, _, k in by_set]
+                        )
                     )
                     causes.append("chance")
             row["robust"] = "false" if parts or vague == "false" else "true"

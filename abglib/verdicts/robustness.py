@@ -1082,11 +1082,19 @@ def describe_joint(judged: Sequence[tuple], limit: int = 6, drawn: str = "") -> 
     return f"jointly ({what}{drawn}): " + ", ".join(parts)
 
 
-def describe_seed_sets(verdicts: Sequence[str], design: Design) -> str:
-    """Where each verdict holds over the seed sets of one row: ``verdicts[k]`` is the
-    verdict under set ``k`` (``k = 0`` the configured seeds)."""
+def describe_seed_sets(
+    verdicts: Sequence[str], design: Design, sets: Sequence[int] | None = None
+) -> str:
+    """Where each verdict holds over the seed sets of one row: ``verdicts[i]`` is the
+    verdict under set ``sets[i]`` (default ``i``; set 0 the configured seeds). The extra
+    draws under chance at the nominal inputs are drawn with sets further apart
+    (:func:`extra_draws`), so their numbers are given."""
+    if sets is None:
+        sets = range(len(verdicts))
+    if len(sets) != len(verdicts):
+        raise AbglibValueError(f"one seed set per verdict: {len(sets)} sets, {len(verdicts)}")
     by: dict[str, list[int]] = {}
-    for k, v in enumerate(verdicts):
+    for k, v in zip(sets, verdicts, strict=True):
         by.setdefault(v, []).append(k)
     parts = [
         f"{v} under set{'s' if len(ks) > 1 else ''} {', '.join(map(str, ks))}"
