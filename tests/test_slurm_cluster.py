@@ -92,12 +92,18 @@ def live_slurmd(tmp_path):
     proc.wait()
 
 
-def test_refuses_a_running_earlier_cluster_outside_ci(tmp_path, conf, live_slurmd):
+def _left_running(tmp_path: Path, conf: Path, pid: int) -> tuple[Path, Path]:
+    """An earlier cluster whose slurmd (``pid``) still runs and whose link is at
+    ``conf``, and a new cluster's directory: (old, new)."""
     old = _cluster_dir(tmp_path, "old")
-    (old / "pid" / "slurmd.pid").write_text(f"{live_slurmd.pid}\n")
+    (old / "pid" / "slurmd.pid").write_text(f"{pid}\n")
     conf.parent.mkdir(parents=True)
     conf.symlink_to(old / "etc" / "slurm.conf")
-    new = _cluster_dir(tmp_path, "new")
+    return old, _cluster_dir(tmp_path, "new")
+
+
+def test_refuses_a_running_earlier_cluster_outside_ci(tmp_path, conf, live_slurmd):
+    old, new = _left_running(tmp_path, conf, live_slurmd.pid)
     r = _link(new, conf)
     assert r.returncode == 1
     assert "still running (slurmd)" in r.stderr and f"ABGLIB_SLURM_DIR={old}" in r.stderr
@@ -106,11 +112,7 @@ def test_refuses_a_running_earlier_cluster_outside_ci(tmp_path, conf, live_slurm
 
 
 def test_stops_a_running_earlier_cluster_under_ci(tmp_path, conf, live_slurmd):
-    old = _cluster_dir(tmp_path, "old")
-    (old / "pid" / "slurmd.pid").write_text(f"{live_slurmd.pid}\n")
-    conf.parent.mkdir(parents=True)
-    conf.symlink_to(old / "etc" / "slurm.conf")
-    new = _cluster_dir(tmp_path, "new")
+    _, new = _left_running(tmp_path, conf, live_slurmd.pid)
     r = _link(new, conf, ci=True)
     assert r.returncode == 0, r.stderr
     assert f"stopped slurmd ({live_slurmd.pid})" in r.stderr
