@@ -682,7 +682,7 @@ def huang_type2(xi, order=2) -> Gains:
 
     .. math::
         \alpha = 1 - \xi^2,\ \beta = (1 - \xi)^2\ \text{(alpha-beta)};\qquad
-        \alpha = 1 - \xi^3,\ \beta = 1.5(1 - \xi)^2(1 + \xi),\
+        \alpha = 1 - \xi^3,\ \beta = 1.5(1 - \xi)^2(1 + \xi),\quad
         \gamma_H = \frac{(1 - \xi)^3}{2}\ \text{(alpha-beta-gamma)} .
 
     In the canonical convention this is Steelman's standard tracker with

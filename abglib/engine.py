@@ -283,7 +283,7 @@ def track(
 
     .. math::
         x_p = \\bar x_{n-1} + T\\bar v_{n-1} + \\tfrac12 T^2 \\bar a_{n-1},\\quad
-        \\bar x_n = x_p + \\alpha r,\\ \\bar v_n = v_p + \\tfrac{\\beta}{T} r,\\
+        \\bar x_n = x_p + \\alpha r,\\ \\bar v_n = v_p + \\tfrac{\\beta}{T} r,\\quad
         \\bar a_n = a_p + \\tfrac{\\gamma}{T^2} r,\\quad r = z_n - x_p.
 
     References

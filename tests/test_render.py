@@ -105,6 +105,14 @@ def test_equations_become_mathml_and_no_dollar_is_left():
     assert math_html(r"(1-\alpha)^{1/3}").startswith('<math display="inline">')
 
 
+def test_an_equation_whose_mathml_would_show_a_backslash_is_refused():
+    # a TeX control space "\\ " cut by a line break is an unknown command to latex2mathml,
+    # printed as text (abglib.track's docstring had one: "\ā" in its API page)
+    with pytest.raises(ValueError, match="backslash"):
+        math_html("r,\\\n\\bar a = a_p")
+    assert "\\" not in math_html("r,\\quad\n\\bar a = a_p")
+
+
 def test_section_references_become_links_only_where_the_section_exists():
     out = link_sections(
         "<p>see section 3, sections 4 and 3, not section 9 nor §4 <code>section 3</code></p>",

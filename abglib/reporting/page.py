@@ -46,7 +46,8 @@ def math_html(latex: str, display: bool = False) -> str:
     Raises
     ------
     ValueError
-        If latex2mathml cannot parse ``latex`` (the message quotes it).
+        If latex2mathml cannot parse ``latex``, or its MathML still shows a backslash (a
+        command it took for text, e.g. a line-ending ``\\ ``); the message quotes ``latex``.
     """
     from latex2mathml.converter import convert
 
@@ -54,6 +55,8 @@ def math_html(latex: str, display: bool = False) -> str:
         out = convert(latex.strip(), display="block" if display else "inline")
     except Exception as exc:  # latex2mathml raises its own exception types
         raise ValueError(f"cannot convert the equation {latex!r} to MathML: {exc}") from exc
+    if "\\" in out:
+        raise ValueError(f"the equation {latex!r} shows a backslash as MathML (an unknown command)")
     return out.replace(' xmlns="http://www.w3.org/1998/Math/MathML"', "")
 
 

@@ -2,9 +2,10 @@
 
 Sphinx's default HTML math renderer (MathJax) loads its script from a CDN, which an offline
 reader cannot reach. This renderer converts every ``:math:`` role and ``.. math::`` block
-with latex2mathml (the same converter the reports use, ``abglib.reporting.page``), so the
+with :func:`abglib.reporting.page.math_html` (the reports' converter, latex2mathml), so the
 pages show every equation with nothing but the browser. An equation latex2mathml cannot
-parse is a build warning (an error under ``-W``), never raw TeX on the page.
+parse, or converts with a backslash left in its text (a command it took
+for a character), is a build warning (an error under ``-W``), never raw TeX on the page.
 """
 
 from __future__ import annotations
@@ -16,15 +17,14 @@ logger = logging.getLogger(__name__)
 
 
 def _mathml(self, node, display: bool) -> str:
-    from latex2mathml.converter import convert
+    from abglib.reporting.page import math_html  # the reports' converter, one home
 
     latex = node.astext().strip()
     try:
-        out = convert(latex, display="block" if display else "inline")
-    except Exception as exc:  # latex2mathml raises its own exception types
-        logger.warning("cannot convert the equation %r to MathML: %s", latex, exc, location=node)
+        return math_html(latex, display)
+    except ValueError as exc:
+        logger.warning("%s", exc, location=node)
         return f"<code>{self.encode(latex)}</code>"
-    return out.replace(' xmlns="http://www.w3.org/1998/Math/MathML"', "")
 
 
 def visit_math(self, node):
