@@ -497,8 +497,17 @@ def _run_batched(order, given, operands, full, state0, npoints, has_det, buffers
         and _PARALLEL_LOCK.acquire(blocking=False)
     )
     try:
-        _batch_kernel(order, parallel)(
-            z2, rz, prm, st, npoints, det, rd, has_det, tuple(views), write, zs
+        kernel = _batch_kernel(order, parallel)
+        from ._kernels import read_only  # loaded with the kernel (numba: never at import)
+
+        kernel(
+            *map(read_only, (z2, rz, prm, st)),
+            npoints,
+            *map(read_only, (det, rd)),
+            has_det,
+            tuple(views),
+            write,
+            zs,
         )
     finally:
         if parallel:

@@ -204,6 +204,30 @@ def test_bad_input_messages(kwargs, match):
         track(**args)
 
 
+def test_the_batched_kernels_compile_once_whatever_the_inputs_writeability():
+    """numba types read-only arrays apart: fresh, read-only and broadcast (read-only)
+    measurements, detections and states give the literal recursion's bits and never
+    compile a second machine code of a batched kernel."""
+    from abglib import _kernels
+
+    z = np.cumsum(np.ones((4, 16)), axis=-1) + np.arange(4)[:, None] ** 2
+    frozen = z.copy()
+    frozen.flags.writeable = False
+    det = np.ones(16, bool)
+    det[5] = False
+    for zz in (z, frozen, np.broadcast_to(z[0], (4, 16))):
+        for g, s0 in ((Gains(0.5, 0.2), [1.0, 0.5]), (Gains(0.5, 0.2, 0.05), [1.0, 0.5, 0.1])):
+            for d in (None, det, np.broadcast_to(det, (4, 16))):
+                for init in (np.array(s0), np.broadcast_to(s0, (4, len(s0)))):
+                    out = track(zz, g, detected=d, init=init)
+                    for k in range(4):
+                        dk = None if d is None else np.broadcast_to(d, (4, 16))[k]
+                        ref = literal_track(zz[k], *g, state=[*s0, 0.0][:3], detected=dk)
+                        np.testing.assert_array_equal(out.x_smooth[k], ref[1])
+    for kernel in (_kernels.run2, _kernels.run3):
+        assert len(kernel.signatures) == 1, kernel.signatures
+
+
 def test_alpha_beta_fast_path_is_bit_identical_to_general_kernel():
     from abglib.engine import _kernel
 

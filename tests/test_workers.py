@@ -78,6 +78,7 @@ def test_a_script_runs_in_a_fresh_process_of_its_own(script, tmp_path, monkeypat
     assert "to the log" in (tmp_path / "a.log").read_text(encoding="utf-8")
 
 
+@pytest.mark.slow  # a fresh process (the fork server)
 def test_a_failing_script_names_the_error_and_its_log(script, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     with pytest.raises(JobFailed, match=r"job\.py failed: ValueError: bad value 7 .*a\.log"):
@@ -112,6 +113,7 @@ def test_a_missing_script_is_named(tmp_path):
         run_script(tmp_path / "nope.py", _job(tmp_path, "a"))
 
 
+@pytest.mark.slow  # starts the fork server
 def test_warm_up_starts_the_fork_server_and_jobs_still_run(tmp_path):
     """warm_up (the workflow's onstart) starts the server at once, without waiting for
     its imports; jobs run through it afterwards as before."""

@@ -489,6 +489,7 @@ def _scratch(scratch: dict, key: str, shape) -> np.ndarray:
 
 def _score_fast(res, nres, o, dt, truth, burn_in, n_vrf, vrf_window, s2, eu_prev, scratch):
     """:func:`_score_numpy` in one compiled pass that releases the GIL (same bits)."""
+    from .._kernels import read_only
     from . import _metric_kernels
 
     ops = _output_operands(res, o)
@@ -523,7 +524,7 @@ def _score_fast(res, nres, o, dt, truth, burn_in, n_vrf, vrf_window, s2, eu_prev
         dummy if nacc is None else nacc,
         nres is not None,
         float(dt),
-        truth,
+        read_only(truth),  # one compiled signature, broadcast truth or not
         burn_in,
         n_vrf if want_vrf else -1,
         float(s2),

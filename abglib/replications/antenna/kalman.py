@@ -24,6 +24,7 @@ import numpy as np
 from numba import njit
 
 from ..._checks import AbglibValueError, check_positive
+from ..._kernels import read_only
 from ._smallmat import gauss_solve, matmul, matmul_nt
 
 __all__ = ["ExtendedModel", "KalmanGains", "extended_model", "kalman_gains", "kalman_riccati"]
@@ -108,7 +109,7 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000, fast=False):
             np.ascontiguousarray(a[np.ix_(live, live)]),
             np.ascontiguousarray(m[:, live]),
             np.ascontiguousarray(vw[np.ix_(live, live)]),
-            np.ascontiguousarray(vv),
+            read_only(np.ascontiguousarray(vv)),
             float(tol),
             int(max_iter),
         )
@@ -116,7 +117,12 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000, fast=False):
         qn[np.ix_(live, live)] = ql
     else:
         qn, ok = _kalman_iterate(
-            a, m, np.ascontiguousarray(vw), np.ascontiguousarray(vv), float(tol), int(max_iter)
+            a,
+            m,
+            np.ascontiguousarray(vw),
+            read_only(np.ascontiguousarray(vv)),
+            float(tol),
+            int(max_iter),
         )
     if not ok:
         raise AbglibValueError(f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}")
