@@ -135,6 +135,41 @@ def pytest_collection_modifyitems(session, config, items):
         items[:] = keep
 
 
+#: Why this worker's tests cannot run as scheduled ("" if they can).
+GROUPS_LOST = pytest.StashKey[str]()
+
+
+def pytest_collection_finish(session):
+    """Fail every test of a pytest-xdist worker whose ``--dist loadgroup`` groups nothing.
+
+    pytest-xdist marks a grouped test by appending ``@<group>`` to its node id; pytest 9.2
+    made node ids structured and the suffix is lost, so every test is scheduled alone
+    (pytest-dev/pytest-xdist#1386). A module's fixtures would then be built on every
+    worker, and the timed pair of tests/test_slurm.py would run at once. pyproject.toml
+    keeps pytest below 9.2; this check makes the break loud if that bound is lifted early
+    (each test fails with the reason: a worker cannot stop the session cleanly).
+    """
+    config = session.config
+    config.stash[GROUPS_LOST] = ""
+    if not (os.environ.get("PYTEST_XDIST_WORKER") and getattr(config.option, "loadgroup", False)):
+        return
+    lost = [i.nodeid for i in session.items if i.get_closest_marker("xdist_group")]
+    lost = [n for n in lost if "@" not in n]
+    if lost:
+        config.stash[GROUPS_LOST] = (
+            f"pytest-xdist --dist loadgroup groups nothing on pytest {pytest.__version__} "
+            f"({len(lost)} grouped tests without their @group, e.g. {lost[0]}; "
+            'pytest-dev/pytest-xdist#1386): install pytest<9.2 (pip install -e ".[dev]") '
+            "or run with -p no:xdist"
+        )
+
+
+def pytest_runtest_setup(item):
+    lost = item.config.stash.get(GROUPS_LOST, "")
+    if lost:
+        pytest.fail(lost, pytrace=False)
+
+
 # ------------------------------------------------------------------ one build per session
 REPO = Path(__file__).resolve().parents[1]
 SMALL = REPO / "tests" / "data" / "config_small.yaml"
@@ -217,6 +252,14 @@ def _build(d: Path, *args: str, env=None) -> None:
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
 
 
+def _build_perturbed(d: Path) -> None:
+    from abglib._perturb import ENV as PERTURB
+    from abglib.reporting import precision
+
+    env = dict(os.environ, **{PERTURB: "1"})
+    _build(d, "--verbose", "--", *precision.TABLE_TARGETS, env=env)
+
+
 @pytest.fixture(scope="session")
 def small_build(tmp_path_factory) -> Path:
     """The whole small build (``snakemake -c2`` of tests/data/config_small.yaml) in a clean
@@ -231,11 +274,4 @@ def perturbed_tables(tmp_path_factory) -> Path:
     abglib._perturb: every float input of the numerical core moved by up to 7 ulps, what
     another CPU, BLAS kernel or dependency set moves one operation by), in a clean working
     directory, logging the scheduler's rounds (``--verbose``: "Ready jobs: N" once a round)."""
-    from abglib._perturb import ENV as PERTURB
-    from abglib.reporting import precision
-
-    def build(d: Path) -> None:
-        env = dict(os.environ, **{PERTURB: "1"})
-        _build(d, "--verbose", "--", *precision.TABLE_TARGETS, env=env)
-
-    return shared_dir(tmp_path_factory, "perturbed_tables", build)
+    return shared_dir(tmp_path_factory, "perturbed_tables", _build_perturbed)

@@ -40,7 +40,9 @@ from .conftest import require
 
 REPO = Path(__file__).resolve().parents[1]
 CHROMIUM = find_chromium()
-pytestmark = pytest.mark.browser
+# one worker runs the module: the summary test reads the pages its page tests checked
+# (CHECKED), and the browser starts once
+pytestmark = [pytest.mark.browser, pytest.mark.xdist_group("browser")]
 
 
 @pytest.fixture(scope="module")

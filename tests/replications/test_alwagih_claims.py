@@ -31,6 +31,9 @@ from abglib.verdicts import Alternative, judge
 from .conftest import claim_test, published, repo_config, small_config, study_for
 
 DOC = "alwagih"
+# one worker evaluates the module's study fixtures (and compiles their loops) for all its
+# tests, instead of each worker doing it again (pytest-xdist --dist loadgroup)
+pytestmark = pytest.mark.xdist_group("alwagih_claims")
 CLAIMS, _ = claims_of(DOC)
 PUB = published(DOC)
 KEYS = list(PUB["key"])

@@ -30,6 +30,9 @@ from abglib.replications.antenna.ensemble import phase_grid, simulate_phases
 from .conftest import claim_test, small_config, study_for
 
 DOC = "antenna"
+# one worker evaluates the module's study fixtures (and compiles their loops) for all its
+# tests, instead of each worker doing it again (pytest-xdist --dist loadgroup)
+pytestmark = pytest.mark.xdist_group("antenna_claims")
 
 
 @pytest.fixture(scope="module")

@@ -27,6 +27,9 @@ from abglib.verdicts import tolerance_from_printed
 from .conftest import claim_test, published, small_config, study_for
 
 DOC = "faa_bendix"
+# one worker evaluates the module's study fixtures (and compiles their loops) for all its
+# tests, instead of each worker doing it again (pytest-xdist --dist loadgroup)
+pytestmark = pytest.mark.xdist_group("faa_bendix_claims")
 PERIODS = range(1, 9)
 KINDS = ("impulse", "ramp")
 
