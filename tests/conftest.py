@@ -29,19 +29,17 @@ while the other runs unit tests.
 from __future__ import annotations
 
 import os as _os
-import tempfile as _tempfile
+
+from ._numba_warm import NUMBA_BASE
 
 # Each pytest-xdist worker compiles into its own numba cache (before numba is imported; the
 # builds a test starts inherit it). Two workers writing one cache at once on a cold clone
 # segfaulted a worker inside a cached gufunc (.ci/run, 2026-12-02: "Fatal Python error:
 # Segmentation fault" in abglib.engine.track, called through numba's gufunc __call__).
-# (A cache dir given by the caller, as tools/version-matrix.sh gives one, gets a folder per
-# worker inside it.)
+# Before its first test the folder gets a copy of the session's warm cache (_warm_numba),
+# so the loops every worker and every small build needs are compiled once (issue 24).
 if _os.environ.get("PYTEST_XDIST_WORKER"):
-    _base = _os.environ.get("NUMBA_CACHE_DIR") or _os.path.join(
-        _tempfile.gettempdir(), f"abglib-numba-{_os.getuid()}"
-    )
-    _os.environ["NUMBA_CACHE_DIR"] = _os.path.join(_base, _os.environ["PYTEST_XDIST_WORKER"])
+    _os.environ["NUMBA_CACHE_DIR"] = str(NUMBA_BASE / _os.environ["PYTEST_XDIST_WORKER"])
 
 import contextlib
 import importlib
@@ -49,6 +47,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import traceback
@@ -57,6 +56,8 @@ from pathlib import Path
 
 import pytest
 from hypothesis import settings
+
+from . import _numba_warm
 
 settings.register_profile("ci", derandomize=True, print_blob=True)
 if os.environ.get("CI"):
@@ -133,6 +134,44 @@ def pytest_collection_modifyitems(session, config, items):
     if drop:
         config.hook.pytest_deselected(items=drop)
         items[:] = keep
+    # the builds first (a stable sort): pytest-xdist hands out tests in this order, and the
+    # long ones reached last left one worker alone with them at the end of the run
+    items.sort(key=lambda item: item.get_closest_marker("pipeline") is None)
+
+
+#: The background compilation of the session's warm numba cache (controller only).
+WARM_UP = pytest.StashKey[subprocess.Popen | None]()
+
+
+def pytest_configure(config):
+    """Before pytest-xdist starts its workers: start compiling the warm numba cache they
+    copy before their first test (:mod:`tests._numba_warm`), unless it exists."""
+    if os.environ.get("PYTEST_XDIST_WORKER") or not config.pluginmanager.hasplugin("xdist"):
+        return
+    if config.getoption("numprocesses", None) and not config.getoption("collectonly"):
+        config.stash[WARM_UP] = _numba_warm.start_warm_up()
+
+
+def pytest_unconfigure(config):
+    """A warm-up still running when the session ends (a short run) is stopped."""
+    proc = config.stash.get(WARM_UP, None)
+    if proc is not None and proc.poll() is None:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(proc.pid, signal.SIGTERM)
+        proc.wait()
+        folder = _numba_warm.warm_folder(NUMBA_BASE)
+        folder.with_name(folder.name + ".pid").unlink(missing_ok=True)
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _warm_numba():
+    """A pytest-xdist worker's numba cache gets the session's warm cache before its first
+    test (waiting for the warm-up the controller started, if need be)."""
+    worker = os.environ.get("PYTEST_XDIST_WORKER")
+    if worker:
+        folder = _numba_warm.warm_folder(NUMBA_BASE)
+        if _numba_warm.wait_for_warm_cache(folder):
+            _numba_warm.seed_numba_cache(folder, NUMBA_BASE / worker)
 
 
 #: Why this worker's tests cannot run as scheduled ("" if they can).
