@@ -212,8 +212,8 @@ def test_small_build_on_slurm_equals_local_run(small_builds, tmp_path):
 
 @pytest.mark.xfail(
     reason="snakemake-executor-plugin-slurm 2.8 runs a group's jobs one at a time, each "
-    "with a Snakemake start of its own (docs/cluster.md, Groups): 5.3 x measured on the "
-    "idle machine, 3.1 x under load",
+    "with a Snakemake start of its own (docs/cluster.md, Groups; upstream "
+    "snakemake-executor-plugin-slurm#469): 5.0-5.3 x measured on the idle machine",
     strict=True,
 )
 def test_small_build_on_slurm_within_twice_local_time(small_builds):
