@@ -199,7 +199,7 @@ def pytest_collection_finish(session):
             f"pytest-xdist --dist loadgroup groups nothing on pytest {pytest.__version__} "
             f"({len(lost)} grouped tests without their @group, e.g. {lost[0]}; "
             'pytest-dev/pytest-xdist#1386): install pytest<9.2 (pip install -e ".[dev]") '
-            "or run with -p no:xdist"
+            "or run without workers (-n 0)"
         )
 
 
