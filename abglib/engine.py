@@ -490,6 +490,8 @@ def _run_batched(order, given, operands, full, state0, npoints, has_det, buffers
             copy_back.append((buf, views[-1]))
     write = tuple(name in buffers for name in names)
     zs = np.empty(nser)
+    from ._kernels import read_only  # numba, as the kernel (never at import abglib)
+
     # threads pay off only on enough work (their start-up costs ~ 10-100 microseconds)
     parallel = (
         nser >= 2 * _LANES
@@ -497,10 +499,7 @@ def _run_batched(order, given, operands, full, state0, npoints, has_det, buffers
         and _PARALLEL_LOCK.acquire(blocking=False)
     )
     try:
-        kernel = _batch_kernel(order, parallel)
-        from ._kernels import read_only  # loaded with the kernel (numba: never at import)
-
-        kernel(
+        _batch_kernel(order, parallel)(
             *map(read_only, (z2, rz, prm, st)),
             npoints,
             *map(read_only, (det, rd)),

@@ -20,9 +20,11 @@ numba reads ``NUMBA_CACHE_DIR``.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -105,9 +107,16 @@ def warm_folder(base: Path = NUMBA_BASE) -> Path:
     return base / "warm" / sources_stamp()
 
 
-def start_warm_up(base: Path = NUMBA_BASE) -> subprocess.Popen | None:
+def _marker(folder: Path, kind: str) -> Path:
+    """``<folder>.pid`` (the running warm-up's process) or ``<folder>.failed`` (why it
+    failed), beside the warm cache ``folder``."""
+    return folder.with_name(f"{folder.name}.{kind}")
+
+
+def start_warm_up(base: Path = NUMBA_BASE) -> tuple[subprocess.Popen, Path] | None:
     """Start compiling the warm cache of the sources as they are now in the background
-    (``python -m tests._numba_warm``), unless it exists; returns the process or None."""
+    (``python -m tests._numba_warm``), unless it exists; returns the process and the
+    folder it makes, or None."""
     folder = warm_folder(base)
     if folder.is_dir():
         return None
@@ -120,17 +129,28 @@ def start_warm_up(base: Path = NUMBA_BASE) -> subprocess.Popen | None:
         start_new_session=True,  # stopped as a group (tests/conftest.py, a short session)
     )
     # written here, not by the warm-up, so that a worker never finds it missing
-    folder.with_name(folder.name + ".pid").write_text(str(proc.pid), encoding="utf-8")
-    return proc
+    _marker(folder, "pid").write_text(str(proc.pid), encoding="utf-8")
+    return proc, folder
+
+
+def stop_warm_up(proc: subprocess.Popen, folder: Path) -> None:
+    """Stop a warm-up :func:`start_warm_up` started if it still runs (a short session):
+    its whole process group, parts included, and its pid file."""
+    if proc.poll() is not None:
+        return
+    with contextlib.suppress(ProcessLookupError):
+        os.killpg(proc.pid, signal.SIGTERM)
+    proc.wait()
+    _marker(folder, "pid").unlink(missing_ok=True)
 
 
 def wait_for_warm_cache(folder: Path, timeout: float = 600.0) -> bool:
     """Wait until ``folder`` is complete (True) or its warm-up failed, ended without it or
     ``timeout`` passed (False)."""
     deadline = time.monotonic() + timeout
-    pid_file = folder.with_name(folder.name + ".pid")
+    pid_file = _marker(folder, "pid")
     while not folder.is_dir():
-        if folder.with_name(folder.name + ".failed").exists() or time.monotonic() > deadline:
+        if _marker(folder, "failed").exists() or time.monotonic() > deadline:
             return False
         try:
             os.kill(int(pid_file.read_text(encoding="utf-8")), 0)
@@ -145,7 +165,9 @@ def build_warm_cache(folder: Path) -> None:
     its own), then rename ``<tmp>`` to ``folder``: readers see a complete folder or none.
     On a part's failure ``<folder>.failed`` holds its error: the warm cache saves time, it
     never decides a result."""
-    pid_file = folder.with_name(folder.name + ".pid")
+    pid_file = _marker(folder, "pid")
+    # stopped by stop_warm_up: leave through the finally clause, no half folder left
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(1))
     tmp = Path(tempfile.mkdtemp(prefix=folder.name + ".", dir=folder.parent))
     try:
         # start from the newest earlier warm cache: after an edit numba recompiles only what
@@ -173,7 +195,7 @@ def build_warm_cache(folder: Path) -> None:
             if proc.returncode != 0:
                 failed.append(f"{part}: {(err.strip().splitlines() or [proc.returncode])[-1]}")
         if failed:
-            folder.with_name(folder.name + ".failed").write_text("\n".join(failed))
+            _marker(folder, "failed").write_text("\n".join(failed), encoding="utf-8")
             return
         try:
             os.rename(tmp, folder)

@@ -47,7 +47,6 @@ import json
 import os
 import re
 import shutil
-import signal
 import subprocess
 import sys
 import traceback
@@ -139,8 +138,9 @@ def pytest_collection_modifyitems(session, config, items):
     items.sort(key=lambda item: item.get_closest_marker("pipeline") is None)
 
 
-#: The background compilation of the session's warm numba cache (controller only).
-WARM_UP = pytest.StashKey[subprocess.Popen | None]()
+#: The background compilation of the session's warm numba cache, and the folder it makes
+#: (controller only).
+WARM_UP = pytest.StashKey[tuple[subprocess.Popen, Path] | None]()
 
 
 def pytest_configure(config):
@@ -154,13 +154,9 @@ def pytest_configure(config):
 
 def pytest_unconfigure(config):
     """A warm-up still running when the session ends (a short run) is stopped."""
-    proc = config.stash.get(WARM_UP, None)
-    if proc is not None and proc.poll() is None:
-        with contextlib.suppress(ProcessLookupError):
-            os.killpg(proc.pid, signal.SIGTERM)
-        proc.wait()
-        folder = _numba_warm.warm_folder(NUMBA_BASE)
-        folder.with_name(folder.name + ".pid").unlink(missing_ok=True)
+    started = config.stash.get(WARM_UP, None)
+    if started is not None:
+        _numba_warm.stop_warm_up(*started)
 
 
 @pytest.fixture(scope="session", autouse=True)

@@ -89,10 +89,10 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000, fast=False):
         raise AbglibValueError("V_w must be symmetric positive semidefinite")
     a = np.ascontiguousarray(a, dtype=float)
     m = np.ascontiguousarray(m, dtype=float)
+    # read-only whatever the caller passed: one compiled signature (abglib._kernels.read_only)
+    vv = read_only(np.ascontiguousarray(vv))
     if not fast:
-        qn, ok = _kalman_iterate_blas(
-            a, m, np.ascontiguousarray(vw), np.ascontiguousarray(vv), float(tol), int(max_iter)
-        )
+        qn, ok = _kalman_iterate_blas(a, m, np.ascontiguousarray(vw), vv, float(tol), int(max_iter))
         if not ok:
             raise AbglibValueError(
                 f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}"
@@ -109,21 +109,14 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000, fast=False):
             np.ascontiguousarray(a[np.ix_(live, live)]),
             np.ascontiguousarray(m[:, live]),
             np.ascontiguousarray(vw[np.ix_(live, live)]),
-            read_only(np.ascontiguousarray(vv)),
+            vv,
             float(tol),
             int(max_iter),
         )
         qn = np.zeros_like(vw)
         qn[np.ix_(live, live)] = ql
     else:
-        qn, ok = _kalman_iterate(
-            a,
-            m,
-            np.ascontiguousarray(vw),
-            read_only(np.ascontiguousarray(vv)),
-            float(tol),
-            int(max_iter),
-        )
+        qn, ok = _kalman_iterate(a, m, np.ascontiguousarray(vw), vv, float(tol), int(max_iter))
     if not ok:
         raise AbglibValueError(f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}")
     return qn
