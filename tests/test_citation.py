@@ -3,8 +3,9 @@
 ``CITATION.cff`` (Citation File Format 1.2.0; ``cffconvert --validate`` accepts it, run by
 hand: cffconvert pins ``jsonschema<4``, which the pipeline's ``jsonschema>=4`` excludes from
 this environment) is checked here for the keys the format requires and for its references:
-one per source document, each as the project's index of sources
-(``shared/seeds/README.md``, beside the repository) names it.
+one per source document, each as the README's table of the five documents states it, and
+as the project's index of sources (``shared/seeds/README.md``, beside the repository, not
+in a clone elsewhere) names it.
 """
 
 from __future__ import annotations
@@ -75,16 +76,12 @@ def test_citation_has_the_keys_the_format_requires(cff):
         assert ref["type"] in ("report", "article") and ref["title"] and ref["authors"], ref
 
 
-def test_citation_references_the_five_source_documents(cff):
-    refs = {_key(ref): ref for ref in cff["references"]}
-    assert sorted(refs) == sorted(KEYS) and len(cff["references"]) == len(KEYS)
-    if not SEEDS.is_file():
-        require(f"the index of sources {SEEDS} is not beside the repository")
-    rows = _seed_rows()
+def _check_references(refs: dict, rows: dict[str, str]) -> None:
+    """Each reference of CITATION.cff as the table row ``rows[key]`` states the document."""
     assert sorted(rows) == sorted(KEYS)
     for key, ref in refs.items():
         doc = rows[key]
-        # the title as the index prints it (in *italics*; the antenna report has none)
+        # the title as the table prints it (in *italics*; the antenna report has none)
         assert f"*{ref['title']}*" in doc or (key == "antenna" and doc.startswith(ref["title"]))
         for person in ref["authors"]:
             if "family-names" in person:
@@ -96,6 +93,30 @@ def test_citation_references_the_five_source_documents(cff):
                 assert str(ref[field]) in doc, (key, field)
     assert refs["steelman1978"]["month"] == 9 and "September 1978" in rows["steelman1978"]
     assert "Sinsky" in refs["faa_bendix"]["notes"] and "Sinsky" in rows["faa_bendix"]
+
+
+def _readme_rows() -> dict[str, str]:
+    """``{key: document cell}`` of the README's table of the five source documents."""
+    rows = {}
+    for line in (REPO / "README.md").read_text(encoding="utf-8").splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) == 4 and cells[1].strip("`") in KEYS:
+            rows[cells[1].strip("`")] = cells[3]
+    return rows
+
+
+def test_citation_references_the_five_source_documents_as_the_readme_does(cff):
+    refs = {_key(ref): ref for ref in cff["references"]}
+    assert sorted(refs) == sorted(KEYS) and len(cff["references"]) == len(KEYS)
+    _check_references(refs, _readme_rows())
+
+
+def test_citation_references_the_five_source_documents_as_the_index_does(cff):
+    """Against the project's index of sources itself (beside the repository: present on
+    the project's machines and CI, where its absence fails; a clone elsewhere skips)."""
+    if not SEEDS.is_file():
+        require(f"the index of sources {SEEDS} is not beside the repository")
+    _check_references({_key(ref): ref for ref in cff["references"]}, _seed_rows())
 
 
 @pytest.mark.install
