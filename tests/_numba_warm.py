@@ -5,8 +5,9 @@ each test worker compiled the same loops again (issue 24). So ``tests/conftest.p
 :func:`start_warm_up` as pytest-xdist starts its workers: the parts of :data:`PARTS` are
 compiled at once, each in a process of its own, into ``<base>/warm/<stamp>/<part>``, where
 the stamp names the sources (every ``abglib`` file's size and mtime, this file, Python's
-and numba's versions) and the folder appears whole or not at all. Before its first test
-each worker waits for it (:func:`wait_for_warm_cache`) and copies it into its own cache
+and numba's versions) and each part's folder appears whole or not at all. Before its first
+test each worker waits for the parts it needs (:func:`wait_for_warm_cache`: the engine's
+first, every part before a build or an antenna test) and copies them into its own cache
 folder (:func:`seed_numba_cache`); a build a test starts inherits its worker's folder.
 Workers keep folders of their own: two workers writing one cache at once on a cold clone
 segfaulted a worker inside a cached gufunc (.ci/run, 2026-12-02). Once compiled, the warm
@@ -64,17 +65,18 @@ PARTS = {"engine": engine, "antenna": antenna}
 DAY = 86400.0
 
 
-def seed_numba_cache(warm: Path, dest: Path) -> int:
-    """Copy numba's cache files from the part folders of ``warm`` (a complete
-    :func:`warm_folder`) into ``dest`` where
-    ``dest`` has no such file or an older one; returns how many were copied.
+def seed_numba_cache(warm: Path, dest: Path, parts=None) -> int:
+    """Copy numba's cache files from the part folders of ``warm`` (a :func:`warm_folder`;
+    ``parts``: those named, default every finished part) into ``dest`` where ``dest`` has
+    no such file or an older one; returns how many were copied.
 
     numba names a cache folder after the source folder's path, so the copy serves the same
     sources, and numba checks each source file's stamp when it loads an entry. A file is
     written under a temporary name and renamed, so that a reader never sees half of it.
     """
     copied = 0
-    for part in sorted(p for p in warm.glob("*") if p.is_dir()):
+    names = sorted(PARTS if parts is None else parts)
+    for part in (warm / name for name in names if (warm / name).is_dir()):
         for src in part.rglob("*"):
             if not src.is_file():
                 continue
@@ -88,6 +90,43 @@ def seed_numba_cache(warm: Path, dest: Path) -> int:
                 os.replace(tmp, out)
             except OSError:  # removed meanwhile: the worker compiles it itself
                 continue
+            copied += 1
+    return copied
+
+
+def _cache_subfolder(source_dir: Path) -> str:
+    """The folder of ``NUMBA_CACHE_DIR`` where numba caches the loops of the sources in
+    ``source_dir`` (numba's own naming: the folder's name and a hash of its path). The one
+    use of numba's cache internals here: a numba without them fails the copying tests."""
+    from numba.core import caching
+
+    locator = caching.UserProvidedCacheLocator  # numba 0.62 (the lowest) to 0.68 at least
+    return locator.get_suitable_cache_subpath(str(source_dir / "__init__.py"))
+
+
+def seed_copy(copy: Path, repo: Path = REPO) -> int:
+    """Give the ``abglib`` of a copy of the repository (its files copied with their
+    mtimes, as shutil.copy2 and copytree do) the numba cache of ``repo``'s, so that the
+    builds a test makes in the copy do not compile every loop again (numba names a cache
+    folder after the source folder's path; it checks each source file's stamp when it
+    loads an entry, so an edited file of the copy still recompiles). Returns how many
+    files were copied. With ``NUMBA_CACHE_DIR`` set (a pytest-xdist worker) its folders
+    are copied under the copy's names; unset, numba caches in each ``__pycache__``."""
+    cache = os.environ.get("NUMBA_CACHE_DIR")
+    copied = 0
+    for src_dir in [repo / "abglib", *(d for d in (repo / "abglib").rglob("*") if d.is_dir())]:
+        if src_dir.name == "__pycache__":
+            continue
+        dst_dir = copy / src_dir.relative_to(repo)
+        if not dst_dir.is_dir():
+            continue
+        if cache:
+            src, dst = (Path(cache) / _cache_subfolder(d) for d in (src_dir, dst_dir))
+        else:
+            src, dst = src_dir / "__pycache__", dst_dir / "__pycache__"
+        for f in src.glob("*.nb[ic]") if src.is_dir() else ():
+            dst.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(f, dst / f.name)
             copied += 1
     return copied
 
@@ -113,12 +152,18 @@ def _marker(folder: Path, kind: str) -> Path:
     return folder.with_name(f"{folder.name}.{kind}")
 
 
+def finished(folder: Path, parts=None) -> bool:
+    """Whether every part of ``parts`` (default :data:`PARTS`) of the warm cache ``folder``
+    is there."""
+    return all((folder / part).is_dir() for part in (PARTS if parts is None else parts))
+
+
 def start_warm_up(base: Path = NUMBA_BASE) -> tuple[subprocess.Popen, Path] | None:
     """Start compiling the warm cache of the sources as they are now in the background
-    (``python -m tests._numba_warm``), unless it exists; returns the process and the
+    (``python -m tests._numba_warm``), unless it is complete; returns the process and the
     folder it makes, or None."""
     folder = warm_folder(base)
-    if folder.is_dir():
+    if finished(folder):
         return None
     folder.parent.mkdir(parents=True, exist_ok=True)
     proc = subprocess.Popen(
@@ -144,62 +189,68 @@ def stop_warm_up(proc: subprocess.Popen, folder: Path) -> None:
     _marker(folder, "pid").unlink(missing_ok=True)
 
 
-def wait_for_warm_cache(folder: Path, timeout: float = 600.0) -> bool:
-    """Wait until ``folder`` is complete (True) or its warm-up failed, ended without it or
-    ``timeout`` passed (False)."""
+def wait_for_warm_cache(folder: Path, parts=None, timeout: float = 600.0) -> bool:
+    """Wait until the ``parts`` (default all) of ``folder`` are there (True) or its warm-up
+    failed, ended without them or ``timeout`` passed (False)."""
     deadline = time.monotonic() + timeout
     pid_file = _marker(folder, "pid")
-    while not folder.is_dir():
+    while not finished(folder, parts):
         if _marker(folder, "failed").exists() or time.monotonic() > deadline:
             return False
         try:
             os.kill(int(pid_file.read_text(encoding="utf-8")), 0)
         except (OSError, ValueError):  # no warm-up running (any more)
-            return folder.is_dir()
+            return finished(folder, parts)
         time.sleep(0.2)
     return True
 
 
 def build_warm_cache(folder: Path) -> None:
     """Compile every part of :data:`PARTS` at once, each into ``<tmp>/<part>`` (a process of
-    its own), then rename ``<tmp>`` to ``folder``: readers see a complete folder or none.
-    On a part's failure ``<folder>.failed`` holds its error: the warm cache saves time, it
-    never decides a result."""
+    its own), and rename each to ``folder/<part>`` as soon as it is done: a reader sees a
+    complete part or none, and waits only for the parts it needs. On a part's failure
+    ``<folder>.failed`` holds its error: the warm cache saves time, it never decides a
+    result."""
     pid_file = _marker(folder, "pid")
     # stopped by stop_warm_up: leave through the finally clause, no half folder left
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(1))
     tmp = Path(tempfile.mkdtemp(prefix=folder.name + ".", dir=folder.parent))
     try:
-        # start from the newest earlier warm cache: after an edit numba recompiles only what
-        # the edited files hold (it checks every entry's source file stamp)
+        folder.mkdir(exist_ok=True)
+        # start each part from the newest earlier warm cache that has it: after an edit
+        # numba recompiles only what the edited files hold (it checks every entry's stamp)
         earlier = [d for d in folder.parent.iterdir() if d.is_dir() and "." not in d.name]
-        if earlier:
-            newest = max(earlier, key=lambda d: d.stat().st_mtime)
-            for part in PARTS:
-                if (newest / part).is_dir():
-                    shutil.copytree(newest / part, tmp / part, dirs_exist_ok=True)
-        procs = {
-            part: subprocess.Popen(
-                [sys.executable, "-m", "tests._numba_warm", "--part", part],
-                cwd=REPO,
-                env=dict(os.environ, NUMBA_CACHE_DIR=str(tmp / part)),
-                stdout=subprocess.DEVNULL,
-                stderr=subprocess.PIPE,
-                text=True,
-            )
-            for part in PARTS
-        }
+        for part in PARTS:
+            done = [d for d in earlier if (d / part).is_dir()]
+            if done:
+                newest = max(done, key=lambda d: (d / part).stat().st_mtime)
+                shutil.copytree(newest / part, tmp / part, dirs_exist_ok=True)
+        procs = {}
+        for part in (p for p in PARTS if not (folder / p).is_dir()):
+            with open(tmp / f"{part}.err", "w") as err:  # the child keeps its own copy
+                procs[part] = subprocess.Popen(
+                    [sys.executable, "-m", "tests._numba_warm", "--part", part],
+                    cwd=REPO,
+                    env=dict(os.environ, NUMBA_CACHE_DIR=str(tmp / part)),
+                    stdout=subprocess.DEVNULL,
+                    stderr=err,
+                )
         failed = []
-        for part, proc in procs.items():
-            _, err = proc.communicate(timeout=900)
-            if proc.returncode != 0:
-                failed.append(f"{part}: {(err.strip().splitlines() or [proc.returncode])[-1]}")
+        while procs:
+            for part, proc in list(procs.items()):
+                if proc.poll() is None:
+                    continue
+                del procs[part]
+                if proc.returncode != 0:
+                    err = (tmp / f"{part}.err").read_text(encoding="utf-8").strip()
+                    failed.append(f"{part}: {(err.splitlines() or [proc.returncode])[-1]}")
+                    continue
+                (tmp / part).mkdir(exist_ok=True)
+                with contextlib.suppress(OSError):  # another session made it meanwhile
+                    os.rename(tmp / part, folder / part)
+            time.sleep(0.1)
         if failed:
             _marker(folder, "failed").write_text("\n".join(failed), encoding="utf-8")
-            return
-        try:
-            os.rename(tmp, folder)
-        except OSError:  # another session made it meanwhile
             return
         # other sources' caches (edited sources, other clones) unused for a day
         for old in folder.parent.iterdir():

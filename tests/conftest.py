@@ -29,14 +29,24 @@ while the other runs unit tests.
 from __future__ import annotations
 
 import os as _os
+import sys as _sys
 
 from ._numba_warm import NUMBA_BASE
+
+# The tests write Python's bytecode (``__pycache__``, ignored by git) even where the
+# environment sets PYTHONDONTWRITEBYTECODE (as many container images do, this project's
+# machines among them): without it every pytest-xdist worker rewrote the asserts of every
+# test module again on every run (about 5 s a worker) and every job of a build compiled
+# abglib afresh. The development loop took 33.5 and 35.7 s with it set, 26.1 and 27.3 s
+# without (2026-12-02, issue 24). Unset here, the builds and workers started later inherit it.
+if _os.environ.pop("PYTHONDONTWRITEBYTECODE", None) is not None:
+    _sys.dont_write_bytecode = False
 
 # Each pytest-xdist worker compiles into its own numba cache (before numba is imported; the
 # builds a test starts inherit it). Two workers writing one cache at once on a cold clone
 # segfaulted a worker inside a cached gufunc (.ci/run, 2026-12-02: "Fatal Python error:
 # Segmentation fault" in abglib.engine.track, called through numba's gufunc __call__).
-# Before its first test the folder gets a copy of the session's warm cache (_warm_numba),
+# Before its first test the folder gets a copy of the session's warm cache (warm_numba),
 # so the loops every worker and every small build needs are compiled once (issue 24).
 if _os.environ.get("PYTEST_XDIST_WORKER"):
     _os.environ["NUMBA_CACHE_DIR"] = str(NUMBA_BASE / _os.environ["PYTEST_XDIST_WORKER"])
@@ -159,15 +169,33 @@ def pytest_unconfigure(config):
         _numba_warm.stop_warm_up(*started)
 
 
-@pytest.fixture(scope="session", autouse=True)
-def _warm_numba():
-    """A pytest-xdist worker's numba cache gets the session's warm cache before its first
-    test (waiting for the warm-up the controller started, if need be)."""
-    worker = os.environ.get("PYTEST_XDIST_WORKER")
-    if worker:
-        folder = _numba_warm.warm_folder(NUMBA_BASE)
-        if _numba_warm.wait_for_warm_cache(folder):
-            _numba_warm.seed_numba_cache(folder, NUMBA_BASE / worker)
+#: The parts of the warm numba cache this worker has copied (or given up waiting for).
+_SEEDED: set[str] = set()
+
+
+def _seed_warm_parts(parts, wait: bool) -> None:
+    worker = os.environ["PYTEST_XDIST_WORKER"]
+    folder = _numba_warm.warm_folder(NUMBA_BASE)
+    todo = [p for p in parts if p not in _SEEDED]
+    if not wait:
+        todo = [p for p in todo if _numba_warm.finished(folder, [p])]
+    if todo:
+        _numba_warm.wait_for_warm_cache(folder, todo)
+        _numba_warm.seed_numba_cache(folder, NUMBA_BASE / worker, todo)
+        _SEEDED.update(todo)
+
+
+def warm_numba(item) -> None:
+    """A pytest-xdist worker's numba cache gets the session's warm cache (the warm-up the
+    controller started), before a test's fixtures are set up: the engine's part before its
+    first test, every part before a build (marker ``pipeline``) or a test with "antenna" in
+    its id, and any part as soon as it is finished. So the unit tests start while the
+    antenna's loops still compile."""
+    if not os.environ.get("PYTEST_XDIST_WORKER") or _SEEDED >= set(_numba_warm.PARTS):
+        return
+    _seed_warm_parts(["engine"], wait=True)
+    every = item.get_closest_marker("pipeline") is not None or "antenna" in item.nodeid
+    _seed_warm_parts(list(_numba_warm.PARTS), wait=every)
 
 
 #: Why this worker's tests cannot run as scheduled ("" if they can).
@@ -199,10 +227,14 @@ def pytest_collection_finish(session):
         )
 
 
+@pytest.hookimpl(tryfirst=True)
 def pytest_runtest_setup(item):
+    """Before the test's fixtures: fail if its groups are lost, give the worker the warm
+    numba cache it needs (:func:`warm_numba`)."""
     lost = item.config.stash.get(GROUPS_LOST, "")
     if lost:
         pytest.fail(lost, pytrace=False)
+    warm_numba(item)
 
 
 # ------------------------------------------------------------------ one build per session

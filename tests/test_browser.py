@@ -6,9 +6,12 @@ a live local server is blocked before it leaves the browser). Then every page of
 report folders (default: the committed release ``reports/v<version>``; another list with
 ``ABGLIB_BROWSER_REPORTS=dir1:dir2``) is loaded with the network blocked and fails on any
 failed request, request to a non-file URL, console error, raw TeX in the visible text,
-NaN in a table cell, broken image or horizontal overflow. Full-page screenshots and
-``pages.csv`` (page heights) go to ``results/screenshots/<folder name>/`` (or
-``$ABGLIB_SCREENSHOTS``); the last test prints where.
+NaN in a table cell, broken image or horizontal overflow. ``pages.csv`` (page heights and
+problems) goes to ``results/screenshots/<folder name>/``; with ``ABGLIB_SCREENSHOTS=<folder>``
+set, a full-page screenshot of every page goes there too (``<folder>/<folder name>/``). A
+screenshot is for a person to look at and checks nothing; it cost 2-2.7 s a page, two
+thirds of the browser's time, so a plain ``pytest`` takes none (issue 24). The last test
+prints where.
 
 Without Chromium (Debian package ``chromium``) every test here that needs it skips, saying
 so, on a developer's machine, and fails under CI (``CI=true``: ``.ci/run`` installs Chromium,
@@ -213,13 +216,23 @@ def _pages():
 
 
 def _shots(folder: Path) -> Path:
-    """``results/screenshots/<folder name>``; numbered when several folders are checked
-    (a build and a release are both ``v<version>``)."""
-    root = Path(os.environ.get("ABGLIB_SCREENSHOTS", REPO / "results" / "screenshots"))
+    """Where ``folder``'s ``pages.csv`` (and screenshots, :func:`_screenshot_of`) go:
+    ``<$ABGLIB_SCREENSHOTS or results/screenshots>/<folder name>``, numbered when several
+    folders are checked (a build and a release are both ``v<version>``)."""
+    root = Path(os.environ.get("ABGLIB_SCREENSHOTS") or REPO / "results" / "screenshots")
     folders = _folders()
     if len(folders) == 1:
         return root / folder.name
     return root / f"{folders.index(folder) + 1}-{folder.name}"
+
+
+def _screenshot_of(folder: Path, page: Path) -> Path | None:
+    """The screenshot of ``page`` in :func:`_shots`, when ``ABGLIB_SCREENSHOTS`` asks for
+    screenshots; else None."""
+    if not os.environ.get("ABGLIB_SCREENSHOTS"):
+        return None
+    rel = page.relative_to(folder).as_posix()
+    return _shots(folder) / (rel.replace("/", "_").removesuffix(".html") + ".png")
 
 
 CHECKED: dict[Path, list[tuple[Path, PageCheck]]] = {}
@@ -230,16 +243,17 @@ CHECKED: dict[Path, list[tuple[Path, PageCheck]]] = {}
 def test_report_page_in_the_browser(browser, folder, page):
     if page is None:
         require(f"no report folder with index.html at {folder}")
-    rel = page.relative_to(folder).as_posix()
-    shot = _shots(folder) / (rel.replace("/", "_").removesuffix(".html") + ".png")
+    shot = _screenshot_of(folder, page)
     c = check_page(browser, page, screenshot=shot)
     CHECKED.setdefault(folder, []).append((page, c))
-    assert not c.problems, f"{page} (screenshot {shot}):\n  " + "\n  ".join(c.problems)
+    seen = f"screenshot {shot}" if shot else "ABGLIB_SCREENSHOTS=<folder> saves a screenshot"
+    assert not c.problems, f"{page} ({seen}):\n  " + "\n  ".join(c.problems)
 
 
 @needs_chromium
 def test_page_heights_and_screenshots_are_recorded(capsys):
-    """Runs after the pages: writes pages.csv per folder and prints the heights."""
+    """Runs after the pages: writes pages.csv per folder and prints the heights (and, with
+    ``ABGLIB_SCREENSHOTS`` set, checks that every page has its screenshot)."""
     from ._browser import write_summary
 
     if not CHECKED:
@@ -248,8 +262,12 @@ def test_page_heights_and_screenshots_are_recorded(capsys):
     for folder, checks in CHECKED.items():
         out = _shots(folder) / "pages.csv"
         write_summary([c for _, c in checks], folder, out)
-        lines.append(f"browser check of {folder}: screenshots and pages.csv in {out.parent}")
+        shots = bool(os.environ.get("ABGLIB_SCREENSHOTS"))
+        what = "screenshots and pages.csv" if shots else "pages.csv"
+        lines.append(f"browser check of {folder}: {what} in {out.parent}")
         for page, c in checks:
+            saved = [Path(f) for f in c.screenshot.split()]  # a page's tiles, if asked for
+            assert (not shots and not saved) or (saved and all(f.is_file() for f in saved)), page
             lines.append(
                 f"  {page.relative_to(folder).as_posix():28s} {c.height:7d} px tall"
                 f"  {len(c.problems)} problems"

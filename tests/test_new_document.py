@@ -21,6 +21,8 @@ from pathlib import Path
 
 import pytest
 
+from ._numba_warm import seed_copy
+
 pytestmark = pytest.mark.pipeline
 
 REPO = Path(__file__).resolve().parents[1]
@@ -138,8 +140,9 @@ def expected_verdict(printed: str, value: float) -> str:
 # ---------------------------------------------------------------- the copy
 def _copy_repo(dest: Path) -> Path:
     """The repository's files (``git ls-files``, and new files not ignored), without the
-    release reports, plus abglib's numba caches (so that the copy's jobs do not compile
-    every kernel again; their sources keep their times, so the caches stay valid)."""
+    release reports, plus abglib's numba cache (:func:`tests._numba_warm.seed_copy`: the
+    copy's jobs do not compile every loop again; its sources keep their times, so the
+    cache stays valid)."""
     listed = subprocess.run(
         ["git", "ls-files", "--cached", "--others", "--exclude-standard", "-z"],
         cwd=REPO,
@@ -153,10 +156,7 @@ def _copy_repo(dest: Path) -> Path:
             continue
         (dest / name).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(src, dest / name)
-    for cache in (REPO / "abglib").rglob("__pycache__"):
-        target = dest / cache.relative_to(REPO)
-        if target.parent.is_dir():
-            shutil.copytree(cache, target, dirs_exist_ok=True)
+    seed_copy(dest, REPO)
     return dest
 
 

@@ -197,15 +197,17 @@ def test_every_comparison_says_what_it_hinges_on(run1):
 
 
 @on_run1
-def test_built_reports_in_a_browser(run1, tmp_path):
+def test_built_reports_in_a_browser(run1):
     """The small build's pages (not only the committed release) pass the offline browser
     checks of tests/test_browser.py: no request, no console error, no raw TeX, no NaN,
-    no broken image, no horizontal overflow."""
+    no broken image, no horizontal overflow. No screenshots (2-2.7 s a page, for a person
+    to look at: ``ABGLIB_BROWSER_REPORTS=<build>/results/reports/v<version>
+    ABGLIB_SCREENSHOTS=<folder> pytest tests/test_browser.py`` takes them)."""
     from ._browser import check_folder, find_chromium
 
     if find_chromium() is None:
         require("no Chromium on PATH (apt-get install chromium; .ci/run installs it)")
-    checks = check_folder(run1 / REPORTS, tmp_path)
+    checks = check_folder(run1 / REPORTS)
     assert len(checks) >= 3
     bad = {c.url: c.problems for c in checks if c.problems}
     assert not bad, bad

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from ._numba_warm import seed_copy
 from .conftest import SMALL_BUILD, copy_build
 
 REPO = Path(__file__).resolve().parents[1]
@@ -85,6 +86,7 @@ def _copy_repo(dest: Path) -> Path:
             shutil.copytree(src, dest / name, ignore=ignore)
         else:
             shutil.copy2(src, dest / name)
+    seed_copy(dest, REPO)  # numba's cache of abglib, under the copy's paths
     return dest
 
 

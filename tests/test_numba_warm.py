@@ -1,0 +1,108 @@
+"""The test session's warm numba cache (tests/_numba_warm.py): parts, waiting, copies."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import textwrap
+
+import pytest
+
+from . import _numba_warm as warm
+
+MODULE = textwrap.dedent(
+    """
+    from numba import njit
+
+
+    @njit(cache=True)
+    def twice(x):
+        return 2.0 * x
+    """
+)
+CALL = (
+    "from abglib.loops import twice; twice(1.5); "
+    "s = twice.stats; print(sum(s.cache_hits.values()), sum(s.cache_misses.values()))"
+)
+
+
+def _run(src, cache):
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(cache), PYTHONPATH=str(src))
+    out = subprocess.run(
+        [sys.executable, "-c", CALL], env=env, capture_output=True, text=True, cwd=src
+    )
+    assert out.returncode == 0, out.stderr[-2000:]
+    hits, misses = map(int, out.stdout.split())
+    return hits, misses
+
+
+@pytest.mark.slow  # five processes compiling or loading a loop
+def test_a_copy_of_the_sources_loads_the_seeded_loops_instead_of_compiling(tmp_path, monkeypatch):
+    """seed_copy names the copy's cache folders as numba does (its one use of numba's
+    cache internals): a copy made with its mtimes kept loads the loop from the cache; an
+    edited copy compiles it again (numba checks the source's stamp)."""
+    repo, cache = tmp_path / "repo", tmp_path / "cache"
+    (repo / "abglib").mkdir(parents=True)
+    (repo / "abglib" / "__init__.py").write_text("", encoding="utf-8")
+    (repo / "abglib" / "loops.py").write_text(MODULE, encoding="utf-8")
+    assert _run(repo, cache) == (0, 1)  # compiled and cached
+    assert _run(repo, cache) == (1, 0)
+
+    copy = tmp_path / "copy"
+    shutil.copytree(repo, copy, ignore=shutil.ignore_patterns("__pycache__"))
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(cache))
+    assert warm.seed_copy(copy, repo) == 2  # the index and the compiled overload
+    assert _run(copy, cache) == (1, 0)
+
+    edited = tmp_path / "edited"
+    shutil.copytree(repo, edited, ignore=shutil.ignore_patterns("__pycache__"))
+    (edited / "abglib" / "loops.py").write_text(MODULE + "\n# edited\n", encoding="utf-8")
+    warm.seed_copy(edited, repo)
+    assert _run(edited, cache) == (0, 1)
+
+
+def test_without_a_cache_folder_the_copy_gets_the_pycache_entries(tmp_path, monkeypatch):
+    repo, copy = tmp_path / "repo", tmp_path / "copy"
+    for d in (repo, copy):
+        (d / "abglib" / "sub").mkdir(parents=True)
+    cached = repo / "abglib" / "sub" / "__pycache__"
+    cached.mkdir()
+    for name in ("loops.twice-5.py311.nbi", "loops.twice-5.py311.1.nbc", "loops.pyc"):
+        (cached / name).write_bytes(b"x")
+    monkeypatch.delenv("NUMBA_CACHE_DIR", raising=False)
+    assert warm.seed_copy(copy, repo) == 2
+    assert sorted(p.name for p in (copy / "abglib" / "sub" / "__pycache__").iterdir()) == [
+        "loops.twice-5.py311.1.nbc",
+        "loops.twice-5.py311.nbi",
+    ]
+
+
+def test_each_part_is_waited_for_on_its_own(tmp_path):
+    folder = tmp_path / "warm" / "stamp"
+    (folder / "engine").mkdir(parents=True)
+    assert warm.finished(folder, ["engine"]) and not warm.finished(folder)
+    # no warm-up running (no pid file, or a dead pid): waiting ends at once
+    assert warm.wait_for_warm_cache(folder, ["engine"], timeout=5)
+    assert not warm.wait_for_warm_cache(folder, timeout=5)
+    code = "import os; print(os.getpid())"
+    dead = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True).stdout
+    folder.with_name("stamp.pid").write_text(dead.strip(), encoding="utf-8")
+    assert not warm.wait_for_warm_cache(folder, ["antenna"], timeout=5)
+    # a running warm-up that failed: its marker ends the wait
+    folder.with_name("stamp.pid").write_text(str(os.getpid()), encoding="utf-8")
+    folder.with_name("stamp.failed").write_text("antenna: boom", encoding="utf-8")
+    assert not warm.wait_for_warm_cache(folder, ["antenna"], timeout=5)
+
+
+def test_seeding_copies_only_the_parts_asked_for_and_never_over_a_newer_file(tmp_path):
+    folder, dest = tmp_path / "warm", tmp_path / "gw0"
+    for part in ("engine", "antenna"):
+        (folder / part / f"{part}_abc").mkdir(parents=True)
+        (folder / part / f"{part}_abc" / "f.nbi").write_text(part, encoding="utf-8")
+    assert warm.seed_numba_cache(folder, dest, ["engine"]) == 1
+    assert [p.name for p in dest.iterdir()] == ["engine_abc"]
+    assert warm.seed_numba_cache(folder, dest) == 1  # engine's file is there already
+    assert sorted(p.name for p in dest.iterdir()) == ["antenna_abc", "engine_abc"]
+    assert not list(dest.rglob("*.tmp"))
