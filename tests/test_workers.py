@@ -134,6 +134,7 @@ def test_warm_up_starts_the_fork_server_and_jobs_still_run(tmp_path):
     assert json.loads((tmp_path / "w1.json").read_text())["pid"] != os.getpid()
 
 
+@pytest.mark.slow  # a job in the fork server (started here, ~3 s of imports)
 def test_a_job_keeps_to_its_threads(tmp_path, script):
     # the job's threads (1 here) bound numba's parallel loops in its worker
     run_script(script, _job(tmp_path, "a"))
