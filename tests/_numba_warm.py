@@ -22,6 +22,7 @@ numba reads ``NUMBA_CACHE_DIR``.
 from __future__ import annotations
 
 import contextlib
+import glob
 import hashlib
 import os
 import shutil
@@ -66,31 +67,38 @@ DAY = 86400.0
 
 
 def seed_numba_cache(warm: Path, dest: Path, parts=None) -> int:
-    """Copy numba's cache files from the part folders of ``warm`` (a :func:`warm_folder`;
+    """Copy numba's cache entries from the part folders of ``warm`` (a :func:`warm_folder`;
     ``parts``: those named, default every finished part) into ``dest`` where ``dest`` has
-    no such file or an older one; returns how many were copied.
+    no such entry or an older one; returns how many files were copied.
 
     numba names a cache folder after the source folder's path, so the copy serves the same
-    sources, and numba checks each source file's stamp when it loads an entry. A file is
-    written under a temporary name and renamed, so that a reader never sees half of it.
+    sources, and numba checks each source file's stamp when it loads an entry. An entry is
+    a function's index (``<name>.nbi``) and the compiled overloads it numbers
+    (``<name>.<n>.nbc``): it is replaced whole, never mixed with the files of one the worker
+    compiled itself (the same numbers can name other signatures there), the overloads
+    first and the index last, each under a temporary name renamed into place, so that a
+    reader never sees an index without its overloads or half a file.
     """
     copied = 0
     names = sorted(PARTS if parts is None else parts)
     for part in (warm / name for name in names if (warm / name).is_dir()):
-        for src in part.rglob("*"):
-            if not src.is_file():
+        for index in part.rglob("*.nbi"):
+            out = dest / index.relative_to(part)
+            if out.exists() and out.stat().st_mtime >= index.stat().st_mtime:
                 continue
-            out = dest / src.relative_to(part)
-            if out.exists() and out.stat().st_mtime >= src.stat().st_mtime:
-                continue
+            entry = glob.escape(index.name.removesuffix(".nbi")) + ".*.nbc"
             out.parent.mkdir(parents=True, exist_ok=True)
-            tmp = out.with_name(f"{out.name}.{os.getpid()}.tmp")
-            try:
-                shutil.copy2(src, tmp)
-                os.replace(tmp, out)
-            except OSError:  # removed meanwhile: the worker compiles it itself
-                continue
-            copied += 1
+            out.unlink(missing_ok=True)
+            for old in out.parent.glob(entry):
+                old.unlink(missing_ok=True)
+            for src in [*index.parent.glob(entry), index]:
+                tmp = out.parent / f"{src.name}.{os.getpid()}.tmp"
+                try:
+                    shutil.copy2(src, tmp)
+                    os.replace(tmp, out.parent / src.name)
+                except OSError:  # removed meanwhile: the worker compiles it itself
+                    break
+                copied += 1
     return copied
 
 

@@ -7,6 +7,7 @@ import shutil
 import subprocess
 import sys
 import textwrap
+import time
 
 import pytest
 
@@ -96,13 +97,36 @@ def test_each_part_is_waited_for_on_its_own(tmp_path):
     assert not warm.wait_for_warm_cache(folder, ["antenna"], timeout=5)
 
 
-def test_seeding_copies_only_the_parts_asked_for_and_never_over_a_newer_file(tmp_path):
+def _entry(folder, name, files):
+    folder.mkdir(parents=True, exist_ok=True)
+    for suffix, text in files.items():
+        (folder / f"{name}{suffix}").write_text(text, encoding="utf-8")
+
+
+def test_seeding_copies_only_the_parts_asked_for_and_whole_entries(tmp_path):
     folder, dest = tmp_path / "warm", tmp_path / "gw0"
     for part in ("engine", "antenna"):
-        (folder / part / f"{part}_abc").mkdir(parents=True)
-        (folder / part / f"{part}_abc" / "f.nbi").write_text(part, encoding="utf-8")
-    assert warm.seed_numba_cache(folder, dest, ["engine"]) == 1
+        _entry(folder / part / f"{part}_abc", "m.f-3.py311", {".nbi": part, ".1.nbc": part})
+    assert warm.seed_numba_cache(folder, dest, ["engine"]) == 2
     assert [p.name for p in dest.iterdir()] == ["engine_abc"]
-    assert warm.seed_numba_cache(folder, dest) == 1  # engine's file is there already
+    assert warm.seed_numba_cache(folder, dest) == 2  # engine's entry is there already
     assert sorted(p.name for p in dest.iterdir()) == ["antenna_abc", "engine_abc"]
     assert not list(dest.rglob("*.tmp"))
+
+
+def test_an_entry_the_worker_compiled_is_replaced_whole_or_kept_whole(tmp_path):
+    """numba numbers a function's overloads in its index: the worker's own ``.1.nbc`` may
+    hold another signature than the warm cache's ``.1.nbc``, so the two never mix."""
+    part, dest = tmp_path / "warm" / "antenna" / "lq_abc", tmp_path / "gw0" / "lq_abc"
+    _entry(dest, "lq.loop-9.py311", {".nbi": "own", ".1.nbc": "own A", ".2.nbc": "own B"})
+    _entry(part, "lq.loop-9.py311", {".nbi": "warm", ".1.nbc": "warm B"})
+    old = time.time() - 60
+    for f in part.iterdir():  # the worker's entry is newer: kept whole
+        os.utime(f, (old, old))
+    assert warm.seed_numba_cache(tmp_path / "warm", tmp_path / "gw0") == 0
+    assert (dest / "lq.loop-9.py311.1.nbc").read_text(encoding="utf-8") == "own A"
+    for f in dest.iterdir():  # the warm cache's entry is newer: replaced whole
+        os.utime(f, (old - 60, old - 60))
+    assert warm.seed_numba_cache(tmp_path / "warm", tmp_path / "gw0") == 2
+    texts = {f.name: f.read_text(encoding="utf-8") for f in dest.iterdir()}
+    assert texts == {"lq.loop-9.py311.nbi": "warm", "lq.loop-9.py311.1.nbc": "warm B"}
