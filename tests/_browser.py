@@ -8,8 +8,8 @@ recorded and failed, so the page is checked as a reader without network sees it.
 
 :func:`check_page` loads one page and returns a :class:`PageCheck`: failed requests,
 network requests, console errors and uncaught exceptions, raw TeX in the visible text,
-``NaN`` in table cells, broken images, horizontal overflow, the page height, and a
-full-page screenshot. :func:`find_chromium` finds the browser (Debian package
+``NaN`` in table cells, broken images, horizontal overflow, the page height, and, when
+asked for, a full-page screenshot. :func:`find_chromium` finds the browser (Debian package
 ``chromium``); ``ABGLIB_CHROMIUM`` names another binary.
 """
 

@@ -112,16 +112,22 @@ def _cache_subfolder(source_dir: Path) -> str:
     return locator.get_suitable_cache_subpath(str(source_dir / "__init__.py"))
 
 
-def seed_copy(copy: Path, repo: Path = REPO) -> int:
+def seed_copy(copy: Path, repo: Path = REPO) -> dict[str, str]:
     """Give the ``abglib`` of a copy of the repository (its files copied with their
     mtimes, as shutil.copy2 and copytree do) the numba cache of ``repo``'s, so that the
-    builds a test makes in the copy do not compile every loop again (numba names a cache
-    folder after the source folder's path; it checks each source file's stamp when it
-    loads an entry, so an edited file of the copy still recompiles). Returns how many
-    files were copied. With ``NUMBA_CACHE_DIR`` set (a pytest-xdist worker) its folders
-    are copied under the copy's names; unset, numba caches in each ``__pycache__``."""
+    builds a test makes in the copy do not compile every loop again; returns what the
+    environment of the copy's builds needs (``{}`` or ``NUMBA_CACHE_DIR``).
+
+    numba names a cache folder after the source folder's path, and checks each source
+    file's stamp when it loads an entry, so an edited file of the copy still recompiles.
+    With ``NUMBA_CACHE_DIR`` set (a pytest-xdist worker) the copy gets a cache folder of
+    its own beside it, ``<copy>-numba`` (removed with the test's temporary folder, not
+    piling up in the worker's), holding the worker's entries under the copy's names;
+    unset, numba caches in each ``__pycache__`` and those entries are copied. The naming
+    is numba's (:func:`_cache_subfolder`); tests/test_numba_warm.py fails if it changes.
+    """
     cache = os.environ.get("NUMBA_CACHE_DIR")
-    copied = 0
+    dest = copy.with_name(f"{copy.name}-numba") if cache else None
     for src_dir in [repo / "abglib", *(d for d in (repo / "abglib").rglob("*") if d.is_dir())]:
         if src_dir.name == "__pycache__":
             continue
@@ -129,14 +135,17 @@ def seed_copy(copy: Path, repo: Path = REPO) -> int:
         if not dst_dir.is_dir():
             continue
         if cache:
-            src, dst = (Path(cache) / _cache_subfolder(d) for d in (src_dir, dst_dir))
+            src = Path(cache) / _cache_subfolder(src_dir)
+            dst = dest / _cache_subfolder(dst_dir)
         else:
             src, dst = src_dir / "__pycache__", dst_dir / "__pycache__"
         for f in src.glob("*.nb[ic]") if src.is_dir() else ():
             dst.mkdir(parents=True, exist_ok=True)
             shutil.copy2(f, dst / f.name)
-            copied += 1
-    return copied
+    if cache:
+        dest.mkdir(exist_ok=True)
+        return {"NUMBA_CACHE_DIR": str(dest)}
+    return {}
 
 
 def sources_stamp() -> str:
@@ -174,6 +183,7 @@ def start_warm_up(base: Path = NUMBA_BASE) -> tuple[subprocess.Popen, Path] | No
     if finished(folder):
         return None
     folder.parent.mkdir(parents=True, exist_ok=True)
+    _marker(folder, "failed").unlink(missing_ok=True)  # an earlier session's failure
     proc = subprocess.Popen(
         [sys.executable, "-m", "tests._numba_warm", str(folder)],
         cwd=REPO,
@@ -197,6 +207,20 @@ def stop_warm_up(proc: subprocess.Popen, folder: Path) -> None:
     _marker(folder, "pid").unlink(missing_ok=True)
 
 
+def _running(pid_file: Path) -> bool:
+    """Whether the warm-up named in ``pid_file`` still runs (a zombie, ended but not yet
+    reaped by the session that started it, does not)."""
+    try:
+        pid = int(pid_file.read_text(encoding="utf-8"))
+        os.kill(pid, 0)
+    except (OSError, ValueError):
+        return False
+    with contextlib.suppress(OSError):  # Linux: the state after the command's parenthesis
+        stat = Path(f"/proc/{pid}/stat").read_text(encoding="utf-8", errors="replace")
+        return stat.rpartition(")")[2].split()[0] != "Z"
+    return True
+
+
 def wait_for_warm_cache(folder: Path, parts=None, timeout: float = 600.0) -> bool:
     """Wait until the ``parts`` (default all) of ``folder`` are there (True) or its warm-up
     failed, ended without them or ``timeout`` passed (False)."""
@@ -205,36 +229,39 @@ def wait_for_warm_cache(folder: Path, parts=None, timeout: float = 600.0) -> boo
     while not finished(folder, parts):
         if _marker(folder, "failed").exists() or time.monotonic() > deadline:
             return False
-        try:
-            os.kill(int(pid_file.read_text(encoding="utf-8")), 0)
-        except (OSError, ValueError):  # no warm-up running (any more)
+        if not _running(pid_file):
             return finished(folder, parts)
         time.sleep(0.2)
     return True
 
 
+#: How long one part may compile before the warm-up gives it up (s).
+PART_TIMEOUT = 900.0
+
+
 def build_warm_cache(folder: Path) -> None:
-    """Compile every part of :data:`PARTS` at once, each into ``<tmp>/<part>`` (a process of
-    its own), and rename each to ``folder/<part>`` as soon as it is done: a reader sees a
-    complete part or none, and waits only for the parts it needs. On a part's failure
-    ``<folder>.failed`` holds its error: the warm cache saves time, it never decides a
-    result."""
+    """Compile the missing parts of :data:`PARTS` at once, each into ``<tmp>/<part>`` (a
+    process of its own), and rename each to ``folder/<part>`` as soon as it is done: a
+    reader sees a complete part or none, and waits only for the parts it needs. On a
+    part's failure (or after :data:`PART_TIMEOUT`) ``<folder>.failed`` holds its error at
+    once: the warm cache saves time, it never decides a result."""
     pid_file = _marker(folder, "pid")
     # stopped by stop_warm_up: leave through the finally clause, no half folder left
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(1))
-    tmp = Path(tempfile.mkdtemp(prefix=folder.name + ".", dir=folder.parent))
+    tmp, procs = None, {}
     try:
+        tmp = Path(tempfile.mkdtemp(prefix=folder.name + ".", dir=folder.parent))
         folder.mkdir(exist_ok=True)
+        todo = [part for part in PARTS if not (folder / part).is_dir()]
         # start each part from the newest earlier warm cache that has it: after an edit
         # numba recompiles only what the edited files hold (it checks every entry's stamp)
         earlier = [d for d in folder.parent.iterdir() if d.is_dir() and "." not in d.name]
-        for part in PARTS:
-            done = [d for d in earlier if (d / part).is_dir()]
-            if done:
-                newest = max(done, key=lambda d: (d / part).stat().st_mtime)
+        for part in todo:
+            done = [d for d in earlier if d != folder and (d / part).is_dir()]
+            if done:  # a stamp folder's mtime is when its last part was renamed in
+                newest = max(done, key=lambda d: d.stat().st_mtime)
                 shutil.copytree(newest / part, tmp / part, dirs_exist_ok=True)
-        procs = {}
-        for part in (p for p in PARTS if not (folder / p).is_dir()):
+        for part in todo:
             with open(tmp / f"{part}.err", "w") as err:  # the child keeps its own copy
                 procs[part] = subprocess.Popen(
                     [sys.executable, "-m", "tests._numba_warm", "--part", part],
@@ -243,30 +270,36 @@ def build_warm_cache(folder: Path) -> None:
                     stdout=subprocess.DEVNULL,
                     stderr=err,
                 )
-        failed = []
+        deadline = time.monotonic() + PART_TIMEOUT
         while procs:
             for part, proc in list(procs.items()):
-                if proc.poll() is None:
+                if proc.poll() is None and time.monotonic() < deadline:
                     continue
                 del procs[part]
                 if proc.returncode != 0:
-                    err = (tmp / f"{part}.err").read_text(encoding="utf-8").strip()
-                    failed.append(f"{part}: {(err.splitlines() or [proc.returncode])[-1]}")
+                    if proc.returncode is None:
+                        proc.kill()
+                        proc.wait()
+                    err = (tmp / f"{part}.err").read_text(encoding="utf-8", errors="replace")
+                    last = (err.strip().splitlines() or [f"exit {proc.returncode}"])[-1]
+                    _marker(folder, "failed").write_text(f"{part}: {last}\n", encoding="utf-8")
                     continue
                 (tmp / part).mkdir(exist_ok=True)
                 with contextlib.suppress(OSError):  # another session made it meanwhile
                     os.rename(tmp / part, folder / part)
             time.sleep(0.1)
-        if failed:
-            _marker(folder, "failed").write_text("\n".join(failed), encoding="utf-8")
-            return
         # other sources' caches (edited sources, other clones) unused for a day
         for old in folder.parent.iterdir():
             if old.name.split(".")[0] == folder.name or time.time() - old.stat().st_mtime < DAY:
                 continue
             shutil.rmtree(old, ignore_errors=True) if old.is_dir() else old.unlink()
     finally:
-        shutil.rmtree(tmp, ignore_errors=True)
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)  # cleaning up: no second way out
+        for proc in procs.values():  # an error here or a stop: no part left compiling
+            proc.kill()
+            proc.wait()
+        if tmp is not None:
+            shutil.rmtree(tmp, ignore_errors=True)
         pid_file.unlink(missing_ok=True)
 
 

@@ -46,8 +46,9 @@ if _os.environ.pop("PYTHONDONTWRITEBYTECODE", None) is not None:
 # builds a test starts inherit it). Two workers writing one cache at once on a cold clone
 # segfaulted a worker inside a cached gufunc (.ci/run, 2026-12-02: "Fatal Python error:
 # Segmentation fault" in abglib.engine.track, called through numba's gufunc __call__).
-# Before its first test the folder gets a copy of the session's warm cache (warm_numba),
-# so the loops every worker and every small build needs are compiled once (issue 24).
+# The folder gets the session's warm cache part by part (warm_numba: the engine's before
+# the first test), so the loops every worker and every small build needs are compiled once
+# (issue 24).
 if _os.environ.get("PYTEST_XDIST_WORKER"):
     _os.environ["NUMBA_CACHE_DIR"] = str(NUMBA_BASE / _os.environ["PYTEST_XDIST_WORKER"])
 
@@ -59,6 +60,7 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 import traceback
 from collections.abc import Callable
 from pathlib import Path
@@ -155,7 +157,8 @@ WARM_UP = pytest.StashKey[tuple[subprocess.Popen, Path] | None]()
 
 def pytest_configure(config):
     """Before pytest-xdist starts its workers: start compiling the warm numba cache they
-    copy before their first test (:mod:`tests._numba_warm`), unless it exists."""
+    copy part by part (:mod:`tests._numba_warm`, :func:`warm_numba`), unless it is
+    complete."""
     if os.environ.get("PYTEST_XDIST_WORKER") or not config.pluginmanager.hasplugin("xdist"):
         return
     if config.getoption("numprocesses", None) and not config.getoption("collectonly"):
@@ -171,6 +174,9 @@ def pytest_unconfigure(config):
 
 #: The parts of the warm numba cache this worker has copied (or given up waiting for).
 _SEEDED: set[str] = set()
+#: How long a worker waits for the warm cache in all (s), from its first wait.
+WARM_WAIT = 600.0
+_WAIT_UNTIL: list[float] = []
 
 
 def _seed_warm_parts(parts, wait: bool) -> None:
@@ -180,7 +186,9 @@ def _seed_warm_parts(parts, wait: bool) -> None:
     if not wait:
         todo = [p for p in todo if _numba_warm.finished(folder, [p])]
     if todo:
-        _numba_warm.wait_for_warm_cache(folder, todo)
+        _WAIT_UNTIL[:] = _WAIT_UNTIL or [time.monotonic() + WARM_WAIT]
+        left = max(0.0, _WAIT_UNTIL[0] - time.monotonic())
+        _numba_warm.wait_for_warm_cache(folder, todo, timeout=left)
         _numba_warm.seed_numba_cache(folder, NUMBA_BASE / worker, todo)
         _SEEDED.update(todo)
 

@@ -7,8 +7,9 @@ report folders (default: the committed release ``reports/v<version>``; another l
 ``ABGLIB_BROWSER_REPORTS=dir1:dir2``) is loaded with the network blocked and fails on any
 failed request, request to a non-file URL, console error, raw TeX in the visible text,
 NaN in a table cell, broken image or horizontal overflow. ``pages.csv`` (page heights and
-problems) goes to ``results/screenshots/<folder name>/``; with ``ABGLIB_SCREENSHOTS=<folder>``
-set, a full-page screenshot of every page goes there too (``<folder>/<folder name>/``). A
+problems) goes to ``<root>/<folder name>/``, the root ``results/screenshots`` of the
+repository; with ``ABGLIB_SCREENSHOTS`` set, a full-page screenshot of every page goes
+there too, the root being its value (``1``, ``true`` or ``yes``: the default root). A
 screenshot is for a person to look at and checks nothing; it cost 2-2.7 s a page, two
 thirds of the browser's time, so a plain ``pytest`` takes none (issue 24). The last test
 prints where.
@@ -215,11 +216,20 @@ def _pages():
     return out
 
 
+def _screenshots_asked() -> bool:
+    """``ABGLIB_SCREENSHOTS`` set to a folder or ``1``/``true``/``yes`` (not ``0``/``false``
+    /``no``)."""
+    return os.environ.get("ABGLIB_SCREENSHOTS", "").strip().lower() not in ("", "0", "false", "no")
+
+
 def _shots(folder: Path) -> Path:
     """Where ``folder``'s ``pages.csv`` (and screenshots, :func:`_screenshot_of`) go:
-    ``<$ABGLIB_SCREENSHOTS or results/screenshots>/<folder name>``, numbered when several
-    folders are checked (a build and a release are both ``v<version>``)."""
-    root = Path(os.environ.get("ABGLIB_SCREENSHOTS") or REPO / "results" / "screenshots")
+    ``<root>/<folder name>``, the root ``$ABGLIB_SCREENSHOTS`` (``results/screenshots`` of
+    the repository when unset or ``1``, ``true``, ``yes``), numbered when several folders
+    are checked (a build and a release are both ``v<version>``)."""
+    asked = os.environ.get("ABGLIB_SCREENSHOTS", "")
+    default = not _screenshots_asked() or asked.strip().lower() in ("1", "true", "yes")
+    root = REPO / "results" / "screenshots" if default else Path(asked)
     folders = _folders()
     if len(folders) == 1:
         return root / folder.name
@@ -229,7 +239,7 @@ def _shots(folder: Path) -> Path:
 def _screenshot_of(folder: Path, page: Path) -> Path | None:
     """The screenshot of ``page`` in :func:`_shots`, when ``ABGLIB_SCREENSHOTS`` asks for
     screenshots; else None."""
-    if not os.environ.get("ABGLIB_SCREENSHOTS"):
+    if not _screenshots_asked():
         return None
     rel = page.relative_to(folder).as_posix()
     return _shots(folder) / (rel.replace("/", "_").removesuffix(".html") + ".png")
@@ -262,12 +272,13 @@ def test_page_heights_and_screenshots_are_recorded(capsys):
     for folder, checks in CHECKED.items():
         out = _shots(folder) / "pages.csv"
         write_summary([c for _, c in checks], folder, out)
-        shots = bool(os.environ.get("ABGLIB_SCREENSHOTS"))
+        shots = _screenshots_asked()
         what = "screenshots and pages.csv" if shots else "pages.csv"
         lines.append(f"browser check of {folder}: {what} in {out.parent}")
         for page, c in checks:
-            saved = [Path(f) for f in c.screenshot.split()]  # a page's tiles, if asked for
-            assert (not shots and not saved) or (saved and all(f.is_file() for f in saved)), page
+            shot = _screenshot_of(folder, page)  # one file, or tiles <stem>-<n>.png
+            tiles = [shot, *shot.parent.glob(f"{shot.stem}-*.png")] if shot else []
+            assert bool(c.screenshot) == shots and (not shots or any(map(Path.is_file, tiles)))
             lines.append(
                 f"  {page.relative_to(folder).as_posix():28s} {c.height:7d} px tall"
                 f"  {len(c.problems)} problems"

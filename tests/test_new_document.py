@@ -138,6 +138,10 @@ def expected_verdict(printed: str, value: float) -> str:
 
 
 # ---------------------------------------------------------------- the copy
+#: What the builds in a copy need in their environment (seed_copy), by copy.
+COPY_ENV: dict[Path, dict[str, str]] = {}
+
+
 def _copy_repo(dest: Path) -> Path:
     """The repository's files (``git ls-files``, and new files not ignored), without the
     release reports, plus abglib's numba cache (:func:`tests._numba_warm.seed_copy`: the
@@ -156,7 +160,7 @@ def _copy_repo(dest: Path) -> Path:
             continue
         (dest / name).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(src, dest / name)
-    seed_copy(dest, REPO)
+    COPY_ENV[dest] = seed_copy(dest, REPO)
     return dest
 
 
@@ -191,6 +195,7 @@ def _snakemake(repo: Path, *args, timeout=600):
     # the copy's abglib (with the new folder) first, for the parse and for every job
     env = {
         **os.environ,
+        **COPY_ENV.get(repo, {}),
         "PYTHONPATH": os.pathsep.join(p for p in (str(repo), os.environ.get("PYTHONPATH")) if p),
     }
     return subprocess.run(

@@ -7,6 +7,7 @@ import shutil
 import subprocess
 import sys
 import textwrap
+import threading
 import time
 
 import pytest
@@ -54,14 +55,15 @@ def test_a_copy_of_the_sources_loads_the_seeded_loops_instead_of_compiling(tmp_p
     copy = tmp_path / "copy"
     shutil.copytree(repo, copy, ignore=shutil.ignore_patterns("__pycache__"))
     monkeypatch.setenv("NUMBA_CACHE_DIR", str(cache))
-    assert warm.seed_copy(copy, repo) == 2  # the index and the compiled overload
-    assert _run(copy, cache) == (1, 0)
+    env = warm.seed_copy(copy, repo)
+    assert env == {"NUMBA_CACHE_DIR": str(tmp_path / "copy-numba")}  # a folder of its own
+    assert len(list((tmp_path / "copy-numba").rglob("*.nb[ic]"))) == 2  # index, overload
+    assert _run(copy, env["NUMBA_CACHE_DIR"]) == (1, 0)
 
     edited = tmp_path / "edited"
     shutil.copytree(repo, edited, ignore=shutil.ignore_patterns("__pycache__"))
     (edited / "abglib" / "loops.py").write_text(MODULE + "\n# edited\n", encoding="utf-8")
-    warm.seed_copy(edited, repo)
-    assert _run(edited, cache) == (0, 1)
+    assert _run(edited, warm.seed_copy(edited, repo)["NUMBA_CACHE_DIR"]) == (0, 1)
 
 
 def test_without_a_cache_folder_the_copy_gets_the_pycache_entries(tmp_path, monkeypatch):
@@ -73,28 +75,47 @@ def test_without_a_cache_folder_the_copy_gets_the_pycache_entries(tmp_path, monk
     for name in ("loops.twice-5.py311.nbi", "loops.twice-5.py311.1.nbc", "loops.pyc"):
         (cached / name).write_bytes(b"x")
     monkeypatch.delenv("NUMBA_CACHE_DIR", raising=False)
-    assert warm.seed_copy(copy, repo) == 2
+    assert warm.seed_copy(copy, repo) == {}
     assert sorted(p.name for p in (copy / "abglib" / "sub" / "__pycache__").iterdir()) == [
         "loops.twice-5.py311.1.nbc",
         "loops.twice-5.py311.nbi",
     ]
 
 
+def _quick(folder, parts=None):
+    """wait_for_warm_cache's answer, which must come at once (not by its timeout)."""
+    t = time.monotonic()
+    ok = warm.wait_for_warm_cache(folder, parts, timeout=60)
+    assert time.monotonic() - t < 5
+    return ok
+
+
 def test_each_part_is_waited_for_on_its_own(tmp_path):
     folder = tmp_path / "warm" / "stamp"
     (folder / "engine").mkdir(parents=True)
     assert warm.finished(folder, ["engine"]) and not warm.finished(folder)
-    # no warm-up running (no pid file, or a dead pid): waiting ends at once
-    assert warm.wait_for_warm_cache(folder, ["engine"], timeout=5)
-    assert not warm.wait_for_warm_cache(folder, timeout=5)
+    # no warm-up running (no pid file, a dead pid, a zombie): no waiting
+    assert _quick(folder, ["engine"]) and not _quick(folder)
+    pid = folder.with_name("stamp.pid")
     code = "import os; print(os.getpid())"
     dead = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True).stdout
-    folder.with_name("stamp.pid").write_text(dead.strip(), encoding="utf-8")
-    assert not warm.wait_for_warm_cache(folder, ["antenna"], timeout=5)
-    # a running warm-up that failed: its marker ends the wait
-    folder.with_name("stamp.pid").write_text(str(os.getpid()), encoding="utf-8")
-    folder.with_name("stamp.failed").write_text("antenna: boom", encoding="utf-8")
-    assert not warm.wait_for_warm_cache(folder, ["antenna"], timeout=5)
+    pid.write_text(dead.strip(), encoding="utf-8")
+    assert not _quick(folder, ["antenna"])
+    zombie = subprocess.Popen([sys.executable, "-c", "pass"])
+    time.sleep(1.0)  # ended, not reaped: os.kill(pid, 0) still succeeds
+    pid.write_text(str(zombie.pid), encoding="utf-8")
+    assert not _quick(folder, ["antenna"])
+    zombie.wait()
+    # a running warm-up: the wait ends when the part appears, or when it failed
+    pid.write_text(str(os.getpid()), encoding="utf-8")
+    timer = threading.Timer(0.5, (folder / "antenna").mkdir)
+    timer.start()
+    t = time.monotonic()
+    assert warm.wait_for_warm_cache(folder, timeout=60)
+    assert 0.4 < time.monotonic() - t < 5
+    timer.join()
+    folder.with_name("stamp.failed").write_text("gamma: boom", encoding="utf-8")
+    assert not _quick(folder, ["gamma"])
 
 
 def _entry(folder, name, files):

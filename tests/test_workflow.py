@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -72,6 +73,8 @@ def test_parsing_the_workflow_imports_no_numerics_beyond_numpy():
 # study, claims and report, one dataset, one benchmark cell), then edited; `snakemake -n`
 # must schedule exactly what the edit touches (issue 14).
 SMALL = REPO / "tests" / "data" / "config_small.yaml"
+#: What the builds in a copy need in their environment (seed_copy), by copy.
+COPY_ENV: dict[Path, dict[str, str]] = {}
 COPIED = ("Snakefile", "config.yaml", "abglib", "workflow", "data", "profiles", "benchmarks")
 
 
@@ -86,14 +89,16 @@ def _copy_repo(dest: Path) -> Path:
             shutil.copytree(src, dest / name, ignore=ignore)
         else:
             shutil.copy2(src, dest / name)
-    seed_copy(dest, REPO)  # numba's cache of abglib, under the copy's paths
+    # numba's cache of abglib under the copy's paths, in a folder of the copy's own
+    COPY_ENV[dest] = seed_copy(dest, REPO)
     return dest
 
 
 def _in_copy(repo: Path, work: Path, *args):
     exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
     cmd = [exe, "-s", str(repo / "Snakefile"), "-d", str(work), "--configfile", str(SMALL)]
-    return subprocess.run([*cmd, *args], capture_output=True, text=True, timeout=600)
+    env = {**os.environ, **COPY_ENV.get(repo, {})}
+    return subprocess.run([*cmd, *args], capture_output=True, text=True, timeout=600, env=env)
 
 
 def _scheduled_rules(stdout: str) -> set[str]:
