@@ -50,6 +50,7 @@ fail() { # fail MESSAGE [LOG]: report (with the log's tail) and go on; the exit 
     failed+=("$1")
 }
 die() { fail "$@"; exit 1; }
+activate() { export VIRTUAL_ENV="$1" PATH="$1/bin:$PATH"; } # activate VENV (in a subshell)
 
 # uv: the one on PATH, else a private copy
 uv="${UV:-$(command -v uv || true)}"
@@ -96,13 +97,15 @@ run_session() {
 
     export NUMBA_CACHE_DIR="$dir/numba-cache"
     t0=$SECONDS
-    (cd "$repo" && "$venv/bin/snakemake" -s "$repo/Snakefile" -d "$dir/build" \
+    # this end's venv is the active one for its build and tests (a caller's VIRTUAL_ENV,
+    # .ci/run's own, made IPython warn "Attempting to work in a virtualenv")
+    (cd "$repo" && activate "$venv" && "$venv/bin/snakemake" -s "$repo/Snakefile" -d "$dir/build" \
         --configfile "$repo/tests/data/config_small.yaml" -c2) >"$dir/snakemake.log" 2>&1 \
         && touch "$dir/build.ok" || fail "[$name] small pipeline failed" "$dir/snakemake.log"
     echo "== [$name] small pipeline in $((SECONDS - t0)) s ($dir/snakemake.log)"
 
     t0=$SECONDS
-    (cd "$repo" && "$venv/bin/pytest" -p no:cacheprovider -q -m "$marks") \
+    (cd "$repo" && activate "$venv" && "$venv/bin/pytest" -p no:cacheprovider -q -m "$marks") \
         >"$dir/pytest.log" 2>&1 || fail "[$name] unit tests failed" "$dir/pytest.log"
     echo "== [$name] unit tests in $((SECONDS - t0)) s: $(tail -n 1 "$dir/pytest.log")"
     unset NUMBA_CACHE_DIR
