@@ -154,6 +154,12 @@ class Dataset:
         """Number of samples per run."""
         return int(self.t.shape[0])
 
+    @property
+    def nbytes(self) -> int:
+        """Bytes of its arrays (times, truth and measurements of every coordinate)."""
+        series = (self.truth_pos, self.truth_vel, self.truth_acc, self.z)
+        return int(self.t.nbytes) + sum(int(a.nbytes) for d in series for a in d.values())
+
 
 # --------------------------------------------------------------------------- checks
 def _where(name: str, key: str) -> str:

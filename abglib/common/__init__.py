@@ -16,6 +16,7 @@ layer above it.
 ``plotting``  the one figure style, its colours and legends, deterministic PNGs
               (matplotlib: imported only here and by the figure modules)
 ``pngmeta``   a PNG's alt text read back with the standard library
+``memo``      a least-recently-used cache bounded by bytes (standard library)
 
 Nothing is imported here: ``import abglib.common.files`` does not bring pandas or
 matplotlib.
