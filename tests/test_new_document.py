@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import os
 import re
-import shutil
 import subprocess
 import sys
 from itertools import pairwise
@@ -21,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-from ._numba_warm import seed_copy
+from ._repo_copy import copy_repo
 
 pytestmark = pytest.mark.pipeline
 
@@ -138,29 +137,14 @@ def expected_verdict(printed: str, value: float) -> str:
 
 
 # ---------------------------------------------------------------- the copy
-#: What the builds in a copy need in their environment (seed_copy), by copy.
+#: What the builds in a copy need in their environment (tests._repo_copy), by copy.
 COPY_ENV: dict[Path, dict[str, str]] = {}
 
 
 def _copy_repo(dest: Path) -> Path:
-    """The repository's files (``git ls-files``, and new files not ignored), without the
-    release reports, plus abglib's numba cache (:func:`tests._numba_warm.seed_copy`: the
-    copy's jobs do not compile every loop again; its sources keep their times, so the
-    cache stays valid)."""
-    listed = subprocess.run(
-        ["git", "ls-files", "--cached", "--others", "--exclude-standard", "-z"],
-        cwd=REPO,
-        capture_output=True,
-        text=True,
-        check=True,
-    ).stdout.split("\0")
-    for name in listed:
-        src = REPO / name
-        if not name or name.startswith(("reports/", "results/")) or not src.is_file():
-            continue
-        (dest / name).parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(src, dest / name)
-    COPY_ENV[dest] = seed_copy(dest, REPO)
+    """The repository's files without the release reports, with abglib's numba cache
+    (:func:`tests._repo_copy.copy_repo`)."""
+    COPY_ENV[dest] = copy_repo(dest)
     return dest
 
 

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from ._numba_warm import seed_copy
+from ._repo_copy import copy_repo
 from .conftest import SMALL_BUILD, copy_build
 
 REPO = Path(__file__).resolve().parents[1]
@@ -73,24 +73,15 @@ def test_parsing_the_workflow_imports_no_numerics_beyond_numpy():
 # study, claims and report, one dataset, one benchmark cell), then edited; `snakemake -n`
 # must schedule exactly what the edit touches (issue 14).
 SMALL = REPO / "tests" / "data" / "config_small.yaml"
-#: What the builds in a copy need in their environment (seed_copy), by copy.
+#: What the builds in a copy need in their environment (tests._repo_copy), by copy.
 COPY_ENV: dict[Path, dict[str, str]] = {}
 COPIED = ("Snakefile", "config.yaml", "abglib", "workflow", "data", "profiles", "benchmarks")
 
 
 def _copy_repo(dest: Path) -> Path:
-    import shutil
-
-    ignore = shutil.ignore_patterns("__pycache__", "results", "*.tsv", ".snakemake")
-    dest.mkdir(parents=True)
-    for name in COPIED:
-        src = REPO / name
-        if src.is_dir():
-            shutil.copytree(src, dest / name, ignore=ignore)
-        else:
-            shutil.copy2(src, dest / name)
-    # numba's cache of abglib under the copy's paths, in a folder of the copy's own
-    COPY_ENV[dest] = seed_copy(dest, REPO)
+    """What a build needs of the repository (:data:`COPIED`), with abglib's numba cache
+    (:func:`tests._repo_copy.copy_repo`)."""
+    COPY_ENV[dest] = copy_repo(dest, COPIED)
     return dest
 
 
