@@ -6,6 +6,7 @@ One home for what ``tests/test_new_document.py`` and ``tests/test_workflow.py`` 
 
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
 from pathlib import Path
@@ -13,11 +14,13 @@ from pathlib import Path
 from ._numba_warm import seed_copy
 
 REPO = Path(__file__).resolve().parents[1]
+#: What the builds in each copy need in their environment (seed_copy), by copy.
+_ENV: dict[Path, dict[str, str]] = {}
 
 
-def copy_repo(dest: Path, parts: tuple[str, ...] | None = None) -> dict[str, str]:
-    """Copy the repository's files into ``dest`` and return what the environment of the
-    copy's builds needs (``{}`` or ``NUMBA_CACHE_DIR``).
+def copy_repo(dest: Path, parts: tuple[str, ...] | None = None) -> Path:
+    """Copy the repository's files into ``dest`` and return ``dest``; run its builds with
+    :func:`copy_env`.
 
     The files are those ``git ls-files`` lists, tracked and new ones not ignored, so no
     build output, cache or ``__pycache__`` comes along; never the release reports or
@@ -42,4 +45,11 @@ def copy_repo(dest: Path, parts: tuple[str, ...] | None = None) -> dict[str, str
             continue
         (dest / name).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(src, dest / name)
-    return seed_copy(dest, REPO)
+    _ENV[dest] = seed_copy(dest, REPO)
+    return dest
+
+
+def copy_env(repo: Path, **extra: str) -> dict[str, str]:
+    """The environment of a build in the copy ``repo``: this process's, with the copy's
+    numba cache (``NUMBA_CACHE_DIR`` where the copy has a folder of its own), and ``extra``."""
+    return {**os.environ, **_ENV.get(repo, {}), **extra}

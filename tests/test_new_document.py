@@ -20,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-from ._repo_copy import copy_repo
+from ._repo_copy import copy_env, copy_repo
 
 pytestmark = pytest.mark.pipeline
 
@@ -137,17 +137,8 @@ def expected_verdict(printed: str, value: float) -> str:
 
 
 # ---------------------------------------------------------------- the copy
-#: What the builds in a copy need in their environment (tests._repo_copy), by copy.
-COPY_ENV: dict[Path, dict[str, str]] = {}
-
-
-def _copy_repo(dest: Path) -> Path:
-    """The repository's files without the release reports, with abglib's numba cache
-    (:func:`tests._repo_copy.copy_repo`)."""
-    COPY_ENV[dest] = copy_repo(dest)
-    return dest
-
-
+# (tests._repo_copy.copy_repo: the repository's files without the release reports, with
+# abglib's numba cache)
 def _add_document(repo: Path, docs_entry: str = "demo") -> None:
     """What docs/new-document.md asks for: a folder, its data, a config entry."""
     folder = repo / "abglib" / "replications" / "demo"
@@ -177,11 +168,9 @@ def _add_document(repo: Path, docs_entry: str = "demo") -> None:
 def _snakemake(repo: Path, *args, timeout=600):
     exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
     # the copy's abglib (with the new folder) first, for the parse and for every job
-    env = {
-        **os.environ,
-        **COPY_ENV.get(repo, {}),
-        "PYTHONPATH": os.pathsep.join(p for p in (str(repo), os.environ.get("PYTHONPATH")) if p),
-    }
+    env = copy_env(
+        repo, PYTHONPATH=os.pathsep.join(p for p in (str(repo), os.environ.get("PYTHONPATH")) if p)
+    )
     return subprocess.run(
         [exe, "-s", str(repo / "Snakefile"), "-d", str(repo), *args],
         capture_output=True,
@@ -196,7 +185,7 @@ def test_a_sixth_document_builds_its_report_and_comparison(tmp_path):
 
     import abglib
 
-    repo = _copy_repo(tmp_path / "repo")
+    repo = copy_repo(tmp_path / "repo")
     _add_document(repo)
     report = f"results/reports/v{abglib.__version__}/demo/index.html"
     targets = [report, "results/demo/comparison.csv"]
@@ -249,7 +238,7 @@ def test_a_sixth_document_builds_its_report_and_comparison(tmp_path):
 def test_a_document_without_a_folder_is_named(tmp_path):
     """A key in docs with neither a built-in rule set nor a folder with a document.yaml
     stops the parse with a message naming it and what a document is."""
-    repo = _copy_repo(tmp_path / "repo")
+    repo = copy_repo(tmp_path / "repo")
     config = repo / "config.yaml"
     text = config.read_text(encoding="utf-8")
     config.write_text(

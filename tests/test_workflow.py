@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-from ._repo_copy import copy_repo
+from ._repo_copy import copy_env, copy_repo
 from .conftest import SMALL_BUILD, copy_build
 
 REPO = Path(__file__).resolve().parents[1]
@@ -73,22 +72,19 @@ def test_parsing_the_workflow_imports_no_numerics_beyond_numpy():
 # study, claims and report, one dataset, one benchmark cell), then edited; `snakemake -n`
 # must schedule exactly what the edit touches (issue 14).
 SMALL = REPO / "tests" / "data" / "config_small.yaml"
-#: What the builds in a copy need in their environment (tests._repo_copy), by copy.
-COPY_ENV: dict[Path, dict[str, str]] = {}
 COPIED = ("Snakefile", "config.yaml", "abglib", "workflow", "data", "profiles", "benchmarks")
 
 
 def _copy_repo(dest: Path) -> Path:
     """What a build needs of the repository (:data:`COPIED`), with abglib's numba cache
     (:func:`tests._repo_copy.copy_repo`)."""
-    COPY_ENV[dest] = copy_repo(dest, COPIED)
-    return dest
+    return copy_repo(dest, COPIED)
 
 
 def _in_copy(repo: Path, work: Path, *args):
     exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
     cmd = [exe, "-s", str(repo / "Snakefile"), "-d", str(work), "--configfile", str(SMALL)]
-    env = {**os.environ, **COPY_ENV.get(repo, {})}
+    env = copy_env(repo)
     return subprocess.run([*cmd, *args], capture_output=True, text=True, timeout=600, env=env)
 
 
