@@ -129,14 +129,27 @@ def _peak_scalar(gains: Gains, output: str, method: str):
         return -(abs(frequency_response(gains, output, w)) ** 2)
 
     m2 = np.abs(frequency_response(gains, output, _GRID)) ** 2
-    i = int(np.argmax(m2))
-    if i in (0, len(_GRID) - 1):
-        return float(_GRID[i]), float(np.sqrt(m2[i]) - 1.0)
-    res = minimize_scalar(
-        neg_mag2, bounds=(_GRID[i - 1], _GRID[i + 1]), method="bounded", options={"xatol": 1e-13}
-    )
-    w, v = (res.x, -res.fun) if -res.fun >= m2[i] else (_GRID[i], m2[i])
-    return float(w), float(np.sqrt(v) - 1.0)
+    # every local maximum of the grid is refined, not only its largest value: a resonance
+    # narrower than the grid's spacing (poles within ~1e-4 of the unit circle) shows on
+    # the grid far below its height, and may lose to an end point (alpha 1.945, beta
+    # 0.0017, gamma 0.068: grid maximum 36.1 at pi, true peak 43.4 at wT 0.188 between
+    # two grid points). Its true peak lies between the local maximum's two neighbours.
+    # The margin leaves out round-off ripple of a flat response (|H| = 1 near DC).
+    inner = m2[1:-1]
+    margin = 1.0 + 1e-12
+    local = np.flatnonzero((inner > m2[:-2] * margin) & (inner > m2[2:] * margin)) + 1
+    best_w, best = (_GRID[0], m2[0]) if m2[0] >= m2[-1] else (_GRID[-1], m2[-1])
+    for i in sorted(set(local.tolist()) | {int(np.argmax(m2))} - {0, len(_GRID) - 1}):
+        res = minimize_scalar(
+            neg_mag2,
+            bounds=(_GRID[i - 1], _GRID[i + 1]),
+            method="bounded",
+            options={"xatol": 1e-13},
+        )
+        w, v = (res.x, -res.fun) if -res.fun >= m2[i] else (_GRID[i], m2[i])
+        if v > best:
+            best_w, best = w, v
+    return float(best_w), float(np.sqrt(best) - 1.0)
 
 
 def _omega_at_gain_scalar(gains: Gains, level: float, output: str, method: str):
