@@ -11,7 +11,7 @@ from abglib.common.jobs import JobFailed
 from abglib.reporting.workers import run_script, script_object
 
 SCRIPT = """
-import json, os, sys
+import gc, json, os, sys
 from abglib.common.jobs import log_to
 
 log_to(snakemake.log[0])
@@ -24,7 +24,7 @@ json._abglib_marker = True  # a module-level change a later job must not see
 with open(snakemake.output.out, "w") as fh:
     json.dump({"pid": os.getpid(), "value": snakemake.params.value,
                "wildcard": snakemake.wildcards.w, "leaked": leaked, "cwd": os.getcwd(),
-               "numba_threads": numba.get_num_threads()}, fh)
+               "numba_threads": numba.get_num_threads(), "frozen": gc.get_freeze_count()}, fh)
 """
 
 
@@ -76,6 +76,9 @@ def test_a_script_runs_in_a_fresh_process_of_its_own(script, tmp_path, monkeypat
     assert not a["leaked"] and not b["leaked"]
     assert a["cwd"] == str(tmp_path)
     assert "to the log" in (tmp_path / "a.log").read_text(encoding="utf-8")
+    # the server's preloaded objects are frozen (workers.freeze_preloaded): a job's
+    # collections skip them (the stack's modules alone are far over 10,000 objects)
+    assert a["frozen"] > 10_000 and b["frozen"] > 10_000
 
 
 @pytest.mark.slow  # a fresh process (the fork server)
