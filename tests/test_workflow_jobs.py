@@ -21,8 +21,10 @@ from pathlib import Path
 import pytest
 import yaml
 
-# Snakemake dry runs of both configs (about 12 CPU-s): not in the fast loop
-pytestmark = pytest.mark.slow
+# Snakemake dry runs of both configs (about 5 CPU-s): not in the fast loop. One worker runs
+# the module, so that each config's dry run is made once (a module fixture is made once
+# per worker that needs it).
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group("workflow_jobs")]
 
 REPO = Path(__file__).resolve().parents[1]
 SNAKEMAKE = Path(sys.executable).parent / "snakemake"
@@ -119,6 +121,16 @@ def test_the_dry_run_schedules_exactly_the_configured_jobs(dry_run):
         f"missing: {sorted((expected - listed).elements())[:10]}; "
         f"unexpected: {sorted((listed - expected).elements())[:10]}"
     )
+
+
+def test_a_plain_build_writes_nothing_under_the_committed_releases(dry_run):
+    """A plain build's every output lies outside the committed releases (``reports/``,
+    written only by ``abglib release``); its reports go to ``results/reports/v<version>``."""
+    _, jobs = dry_run
+    written = [f for j in jobs for f in j["output"]]
+    assert written, "the dry run listed no outputs"
+    assert not [f for f in written if f.startswith("reports/")], written[:5]
+    assert any(f.startswith("results/reports/v") for f in written)
 
 
 def test_each_job_writes_its_own_outputs_where_the_contracts_say(dry_run):
