@@ -160,6 +160,40 @@ def test_peak_two_routes_and_brute_force(gains, output):
     assert mag(gains, w_poly, output) == pytest.approx(1 + ov_poly, rel=1e-8)
 
 
+#: a resonance about as narrow as the grid route's spacing (pole radius 0.99981), its peak
+#: between two grid points (found by hypothesis, 2026-12-02)
+SHARP = Gains(alpha=1.9453125, beta=0.001708984375, gamma=0.068389892578125)
+
+
+@pytest.mark.parametrize("level_db", [32.0, 31.1, 20.0, 3.0, 0.0, -3.0])
+def test_omega_at_gain_two_routes_on_a_sharp_resonance(level_db):
+    """Past the sharp peak the response falls through 31-33 dB before the next grid
+    point: the grid route must start from the peak, not from the grid point after it."""
+    w_poly = omega_at_gain(SHARP, level_db)
+    w_grid = omega_at_gain(SHARP, level_db, method="grid")
+    assert np.isnan(w_poly) == np.isnan(w_grid)
+    if not np.isnan(w_poly):
+        assert w_grid == pytest.approx(w_poly, rel=1e-9)
+        assert 20 * np.log10(mag(SHARP, w_grid)) == pytest.approx(level_db, abs=1e-6)
+    _, overshoot = peak(SHARP)
+    assert np.isnan(omega_at_gain(SHARP, 20 * np.log10(1 + overshoot) + 0.01, method="grid"))
+
+
+def test_grid_peak_inside_the_last_grid_interval():
+    """Poles at angle 3.14151, beyond the grid route's last interior point (pi - 3.8e-4),
+    radius 0.99995: the peak (|H| 4.6e8) lies between that point and pi, where the grid's
+    largest value is (4.0e8, rising towards pi); a fine brute-force grid over that
+    interval finds the same peak. (The poly route loses its digits this close to the
+    stability boundary, 2 alpha + beta = 4 - 1e-8.)"""
+    g = Gains(1e-4, 4 - 2e-4 - 1e-8)
+    w_grid, ov_grid = peak(g, method="grid")
+    fine = np.linspace(np.pi - 4e-4, np.pi, 400_001)
+    m = mag(g, fine)
+    assert m.max() > 1.1 * mag(g, np.pi)
+    assert 1 + ov_grid == pytest.approx(m.max(), rel=1e-6)
+    assert w_grid == pytest.approx(fine[np.argmax(m)], abs=1e-7)  # half-width 5e-5
+
+
 @settings(max_examples=20, deadline=None)
 @given(thetas)
 def test_first_undesired_max_is_the_alias_of_the_peak(theta):

@@ -129,27 +129,35 @@ def _peak_scalar(gains: Gains, output: str, method: str):
         return -(abs(frequency_response(gains, output, w)) ** 2)
 
     m2 = np.abs(frequency_response(gains, output, _GRID)) ** 2
-    # every local maximum of the grid is refined, not only its largest value: a resonance
-    # narrower than the grid's spacing (poles within ~1e-4 of the unit circle) shows on
-    # the grid far below its height, and may lose to an end point (alpha 1.945, beta
-    # 0.0017, gamma 0.068: grid maximum 36.1 at pi, true peak 43.4 at wT 0.188 between
-    # two grid points). Its true peak lies between the local maximum's two neighbours.
-    # The margin leaves out round-off ripple of a flat response (|H| = 1 near DC).
-    inner = m2[1:-1]
+    # Every local maximum of the grid is refined, not only its largest value: a resonance
+    # about as narrow as the grid's spacing (poles within ~2e-4 of the unit circle) shows
+    # on the grid far below its height and may lose to an end point (alpha 1.945, beta
+    # 0.0017, gamma 0.068: grid maximum 36.1 at pi, true peak 43.4 at wT 0.188 between two
+    # grid points); its true peak lies between the local maximum's two neighbours. The
+    # intervals next to 0 and pi are searched too where the response rises towards the
+    # end, a peak inside them having no grid point on its far side. The margin leaves out
+    # round-off ripple of a flat response (|H| = 1 near DC, alpha = 1).
+    last = len(_GRID) - 1
     margin = 1.0 + 1e-12
-    local = np.flatnonzero((inner > m2[:-2] * margin) & (inner > m2[2:] * margin)) + 1
-    best_w, best = (_GRID[0], m2[0]) if m2[0] >= m2[-1] else (_GRID[-1], m2[-1])
-    for i in sorted(set(local.tolist()) | {int(np.argmax(m2))} - {0, len(_GRID) - 1}):
-        res = minimize_scalar(
-            neg_mag2,
-            bounds=(_GRID[i - 1], _GRID[i + 1]),
-            method="bounded",
-            options={"xatol": 1e-13},
-        )
-        w, v = (res.x, -res.fun) if -res.fun >= m2[i] else (_GRID[i], m2[i])
-        if v > best:
-            best_w, best = w, v
-    return float(best_w), float(np.sqrt(best) - 1.0)
+    inner = m2[1:-1]
+    # not below either neighbour and clearly above one (a peak midway between two grid
+    # points leaves them nearly equal)
+    clear = (inner > m2[:-2] * margin) | (inner > m2[2:] * margin)
+    local = np.flatnonzero((inner >= m2[:-2]) & (inner >= m2[2:]) & clear) + 1
+    brackets = [(_GRID[i - 1], _GRID[i + 1]) for i in local]
+    if m2[0] > m2[1] * margin:
+        brackets.append((_GRID[0], _GRID[1]))
+    if m2[last] > m2[last - 1] * margin:
+        brackets.append((_GRID[last - 1], _GRID[last]))
+    found = [(_GRID[0], m2[0]), (_GRID[last], m2[last])]
+    found += [(_GRID[i], m2[i]) for i in local]
+    for lo, hi in brackets:
+        res = minimize_scalar(neg_mag2, bounds=(lo, hi), method="bounded", options={"xatol": 1e-13})
+        found.append((res.x, -res.fun))
+    # the global maximum; on ties (a flat response) the lowest frequency, as the poly route
+    top = max(v for _, v in found)
+    w, v = min((w, v) for w, v in found if v >= top * (1.0 - 1e-15))
+    return float(w), float(np.sqrt(v) - 1.0)
 
 
 def _omega_at_gain_scalar(gains: Gains, level: float, output: str, method: str):
@@ -163,10 +171,13 @@ def _omega_at_gain_scalar(gains: Gains, level: float, output: str, method: str):
     def excess(x):
         return abs(frequency_response(gains, output, x)) ** 2 - level**2
 
-    grid = np.union1d(_GRID[_GRID > w_pk], [np.pi])
+    # from the peak itself, so that a fall through the level before the next grid point is
+    # seen (a sharp resonance); the first sign change is then a fall, and a level at or
+    # above the peak is never reached above it
+    grid = np.union1d(_GRID[_GRID > w_pk], [w_pk, np.pi])
     vals = np.abs(frequency_response(gains, output, grid)) ** 2 - level**2
-    if vals[0] == 0.0:
-        return (float(grid[0]),)
+    if vals[0] <= 0.0:
+        return (float("nan"),)
     change = np.flatnonzero(np.sign(vals[1:]) != np.sign(vals[:-1]))
     if change.size == 0:
         return (float("nan"),)
@@ -217,7 +228,8 @@ def peak(gains: Gains, output: str = "x_smooth", method: str = "poly"):
     method : {"poly", "grid"}, default "poly"
         ``"poly"``: stationary points of :math:`|H|^2` as the real roots in
         :math:`0 < q < 4` of :math:`P'Q - PQ'` (:math:`|H|^2 = P(q)/Q(q)`), plus the
-        end points. ``"grid"``: maximum on a dense grid, refined by bounded Brent search.
+        end points. ``"grid"``: every local maximum of a dense grid (and a rise towards
+        either end) refined by bounded Brent search.
 
     Returns
     -------
@@ -258,8 +270,8 @@ def omega_at_gain(gains: Gains, level_db, output: str = "x_smooth", method: str 
     method : {"poly", "grid"}, default "poly"
         ``"poly"``: real roots in ``q`` of :math:`|N|^2 - L^2|\\Delta|^2` (a cubic in
         :math:`\\cos\\omega T` for the alpha-beta-gamma tracker, the equation Steelman
-        calls intractable before eq 51). ``"grid"``: first sign change on a dense grid,
-        then :func:`scipy.optimize.brentq`.
+        calls intractable before eq 51). ``"grid"``: first sign change on a dense grid
+        starting at the grid route's peak, then :func:`scipy.optimize.brentq`.
 
     Returns
     -------
