@@ -177,15 +177,19 @@ def load_figures() -> None:
 
 
 def freeze_preloaded() -> None:
-    """Move every object the fork server holds after its preloads (some 300,000: the
+    """Collect the preloads' garbage once (the warm-up figure of :func:`load_figures`
+    among it), then move every object the fork server still holds (about 310,000: the
     scientific stack's modules, numba's dispatchers, matplotlib's caches) into the garbage
     collector's permanent generation (:func:`gc.freeze`), which every job forked from the
     server inherits. The collections a job triggers then traverse only what the job itself
-    made, and they no longer write to the server's objects, so the pages a fork shares
-    with the server stay shared (CPython's advice for a process that forks without exec:
-    the :mod:`gc` docs, ``gc.freeze``). What a job allocates is collected as before."""
+    made, and the collector no longer writes to the server's objects (reference counts
+    still do, where a job uses them): the :mod:`gc` docs' advice for a process that forks
+    without exec. What a job allocates is collected as before; an object frozen here that
+    later becomes cyclic garbage is never freed (the server's objects live as long as it
+    does anyway)."""
     import gc
 
+    gc.collect()
     gc.freeze()
 
 
