@@ -139,11 +139,14 @@ def test_omega_at_gain_two_routes(theta, level_db, output):
     assert np.all(20 * np.log10(mag(g, between, output)) > level_db - 1e-9)
 
 
+#: a resonance about as narrow as the grid route's spacing (pole radius 0.99981), its peak
+#: between two grid points (found by hypothesis, 2026-12-02)
+SHARP = Gains(alpha=1.9453125, beta=0.001708984375, gamma=0.068389892578125)
+
+
 @settings(max_examples=30, deadline=None)
 @given(st.one_of(thetas.map(standard), stable_gains()), st.sampled_from(["x_smooth", "x_pred"]))
-# found by hypothesis (2026-12-02): a resonance narrower than the grid's spacing (pole
-# radius 0.99981) between two grid points, whose grid value lost to the one at pi
-@example(Gains(alpha=1.9453125, beta=0.001708984375, gamma=0.068389892578125), "x_smooth")
+@example(SHARP, "x_smooth")  # the grid route's value at pi beat its refined largest value
 def test_peak_two_routes_and_brute_force(gains, output):
     assume(abs(gains.alpha - 1) > 1e-3)  # alpha = 1: Xbar = X, flat, the peak is anywhere
     w_poly, ov_poly = peak(gains, output)
@@ -158,11 +161,6 @@ def test_peak_two_routes_and_brute_force(gains, output):
     # alpha 1.95, |H| = 656 off by 1.4e-9 relative on one CPU)
     assert mag(gains, DENSE, output).max() <= (1 + ov_poly) * (1 + 1e-8)
     assert mag(gains, w_poly, output) == pytest.approx(1 + ov_poly, rel=1e-8)
-
-
-#: a resonance about as narrow as the grid route's spacing (pole radius 0.99981), its peak
-#: between two grid points (found by hypothesis, 2026-12-02)
-SHARP = Gains(alpha=1.9453125, beta=0.001708984375, gamma=0.068389892578125)
 
 
 @pytest.mark.parametrize("level_db", [32.0, 31.1, 20.0, 3.0, 0.0, -3.0])
@@ -181,8 +179,8 @@ def test_omega_at_gain_two_routes_on_a_sharp_resonance(level_db):
 
 def test_grid_peak_inside_the_last_grid_interval():
     """Poles at angle 3.14151, beyond the grid route's last interior point (pi - 3.8e-4),
-    radius 0.99995: the peak (|H| 4.6e8) lies between that point and pi, where the grid's
-    largest value is (4.0e8, rising towards pi); a fine brute-force grid over that
+    radius 0.99995: the peak (|H| 4.6e8) lies between that point and pi, where the grid
+    has its largest value (4.0e8, rising towards pi); a fine brute-force grid over that
     interval finds the same peak. (The poly route loses its digits this close to the
     stability boundary, 2 alpha + beta = 4 - 1e-8.)"""
     g = Gains(1e-4, 4 - 2e-4 - 1e-8)

@@ -139,6 +139,8 @@ def expected_verdict(printed: str, value: float) -> str:
 # ---------------------------------------------------------------- the copy
 # (tests._repo_copy.copy_repo: the repository's files without the release reports, with
 # abglib's numba cache)
+
+
 def _add_document(repo: Path, docs_entry: str = "demo") -> None:
     """What docs/new-document.md asks for: a folder, its data, a config entry."""
     folder = repo / "abglib" / "replications" / "demo"
