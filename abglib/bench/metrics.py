@@ -54,6 +54,7 @@ __all__ = [
     "fail_threshold",
     "noise_vrf",
     "settle_samples",
+    "t_quantile",
     "v_pred",
     "vrf_failures",
 ]
@@ -220,14 +221,14 @@ def _ci(per_run: np.ndarray, level: float) -> tuple[float, float, float, float]:
     """Mean, standard error and the two-sided Student-t CI of per-run estimates."""
     m = float(np.mean(per_run))
     se = float(np.std(per_run, ddof=1) / math.sqrt(per_run.size))
-    q = _t_quantile(0.5 + level / 2.0, per_run.size - 1)
+    q = t_quantile(0.5 + level / 2.0, per_run.size - 1)
     return m, se, m - q * se, m + q * se
 
 
 @functools.lru_cache(maxsize=256)
-def _t_quantile(p: float, dof: int) -> float:
-    # scipy.stats.t.ppf costs ~1 ms a call; a build asks for the same few quantiles
-    # (one level, one number of runs) thousands of times
+def t_quantile(p: float, dof: int) -> float:
+    """Student-t quantile ``scipy.stats.t.ppf(p, dof)``, cached: it costs ~1 ms a call and
+    a build asks for the same few (one level, one number of runs) thousands of times."""
     import scipy.stats
 
     return float(scipy.stats.t.ppf(p, dof))

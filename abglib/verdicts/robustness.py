@@ -385,7 +385,13 @@ def config_get(config: Mapping, path: str):
     return node
 
 
+#: Leaves a config copy shares: immutable, so ``copy.copy`` would return them unchanged.
+_IMMUTABLE = frozenset({str, int, float, bool, type(None)})
+
+
 def _plain(x):
+    if type(x) in _IMMUTABLE:
+        return x
     if isinstance(x, Mapping):
         return {k: _plain(v) for k, v in x.items()}
     if isinstance(x, (list, tuple)):
@@ -776,6 +782,15 @@ def point_verdict(nominal: str, verdicts: Sequence[str], confirm: int) -> str:
     return nominal
 
 
+@functools.lru_cache(maxsize=4096)
+def _beta_quantile(q: float, a: int, b: int) -> float:
+    """``scipy.stats.beta.ppf(q, a, b)``, cached: a build asks for the same Clopper-Pearson
+    bounds (a few confidence levels, small counts) thousands of times, ~0.1 ms each."""
+    from scipy.stats import beta
+
+    return float(beta.ppf(q, a, b))
+
+
 @dataclass(frozen=True)
 class ChanceJudgement:
     """A Monte Carlo row's verdict under chance (:func:`chance_judgement`).
@@ -805,9 +820,7 @@ class ChanceJudgement:
         x, n = self.contradictions, self.draws
         if n == 0 or x >= n:
             return 1.0
-        from scipy.stats import beta
-
-        return float(beta.ppf(self.confidence, x + 1, n - x))
+        return _beta_quantile(self.confidence, x + 1, n - x)
 
     @property
     def lower(self) -> float:
@@ -815,9 +828,7 @@ class ChanceJudgement:
         x, n = self.contradictions, self.draws
         if x == 0:
             return 0.0
-        from scipy.stats import beta
-
-        return float(beta.ppf(1.0 - self.confidence, x, n - x + 1))
+        return _beta_quantile(1.0 - self.confidence, x, n - x + 1)
 
     @property
     def state(self) -> str:

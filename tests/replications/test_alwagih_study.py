@@ -82,6 +82,42 @@ def test_mc_summary_interval_is_the_student_t_interval():
     assert s["ci_low"] == pytest.approx(lo) and s["ci_high"] == pytest.approx(hi)
 
 
+def test_mc_summary_is_the_grouped_mean_std_and_interval_bit_for_bit():
+    # groups interleaved, of unequal sizes and one of a single run (NaN spread); the route
+    # is pandas' groupby(...).agg of numpy's reductions of each group (the bits the former
+    # groupby(...).apply gave), and the interval is scipy's
+    rng = np.random.default_rng(11)
+    keys = [("white", 1, "X", "M1"), ("coloured", 2, "Y", "M5"), ("white", 1, "Y", "M1")]
+    sizes = [7, 12, 1]
+    rows = [k for k, n in zip(keys, sizes, strict=True) for _ in range(n)]
+    order = rng.permutation(len(rows))
+    df = pd.DataFrame(
+        [rows[i] for i in order], columns=["noise", "experiment", "coord", "method"]
+    ).assign(run=0, rmse=rng.gamma(2.0, 30.0, len(rows)))
+    got = alwagih.mc_summary(df, 0.95)
+    g = df.groupby(["noise", "experiment", "coord", "method"], sort=False)["rmse"]
+    want = g.agg(
+        size="size",
+        mean=lambda x: x.to_numpy().mean(),
+        std=lambda x: x.to_numpy().std(ddof=1) if x.size > 1 else np.nan,
+    ).reset_index()
+    assert list(got.columns) == [*want.columns[:4], "runs", "mean", "std", "ci_low", "ci_high"]
+    assert got[want.columns[:4]].equals(want[want.columns[:4]])  # dtypes included
+    first_seen = df[list(want.columns[:4])].drop_duplicates().reset_index(drop=True)
+    assert got[want.columns[:4]].equals(first_seen)
+    assert got["runs"].tolist() == want["size"].astype(float).tolist()
+    np.testing.assert_array_equal(got["mean"], want["mean"])
+    single = got["runs"] == 1.0
+    np.testing.assert_array_equal(got["std"][~single], want["std"][~single])
+    for i in np.flatnonzero(~single):
+        x = df["rmse"][g.indices[tuple(got.iloc[i, :4])]].to_numpy()
+        lo, hi = stats.t.interval(0.95, x.size - 1, loc=x.mean(), scale=stats.sem(x))
+        assert got["ci_low"][i] == pytest.approx(lo, rel=1e-14)
+        assert got["ci_high"][i] == pytest.approx(hi, rel=1e-14)
+    assert single.sum() == 1
+    assert got.loc[single, ["std", "ci_low", "ci_high"]].isna().all(axis=None)
+
+
 def _wide(values):
     """(noise=white, experiment, coord=X) x methods table from {method: [per experiment]}."""
     idx = pd.MultiIndex.from_tuples(
