@@ -175,10 +175,12 @@ def mc_summary(rmse: pd.DataFrame, confidence: float = 0.95) -> pd.DataFrame:
     robustness builds this table for every study, ~140 groups each).
     """
     keys = ["noise", "experiment", "coord", "method"]
-    groups = rmse.groupby(keys, sort=False).indices  # {key: positions, ascending}
+    # {key: its rows' positions, ascending}, in the order the groups first appear (the
+    # dict's own order is not that on every pandas: 2.2 gives another)
+    groups = sorted(rmse.groupby(keys, sort=False).indices.items(), key=lambda kv: kv[1][0])
     values = rmse["rmse"].to_numpy()
     cols: dict[str, list] = {k: [] for k in (*keys, "runs", "mean", "std", "ci_low", "ci_high")}
-    for key, where in groups.items():
+    for key, where in groups:
         x = values[where]
         n = x.size
         std = x.std(ddof=1) if n > 1 else np.nan
