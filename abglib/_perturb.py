@@ -121,9 +121,16 @@ def perturb(x, k: int | None = None):
     if a.dtype != np.float64:
         return x
     out = _perturbed(np.ascontiguousarray(a), k).reshape(a.shape)
-    if isinstance(x, np.ndarray) and not x.flags.writeable:
+    if isinstance(x, np.ndarray) and _read_only(x):
         out.setflags(write=False)
     return out
+
+
+def _read_only(x: np.ndarray) -> bool:
+    # the array interface's read-only flag: ``x.flags.writeable`` warns (FutureWarning,
+    # numpy >= 1.17) on a view from np.broadcast_arrays, which numpy is making read-only;
+    # the interface already reports such a view read-only, without the warning
+    return bool(x.__array_interface__["data"][1])
 
 
 def perturb_scalar(x: float, k: int | None = None) -> float:

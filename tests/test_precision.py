@@ -2,6 +2,8 @@
 (abglib.reporting.precision; the lookup, abglib.common.tables): every spec checked against
 values made by hand."""
 
+import warnings
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -34,6 +36,27 @@ def test_plain_arithmetic_is_untouched(monkeypatch):
     assert perturb(x) is x and perturb(0.3) == 0.3
     monkeypatch.setenv(ENV, "0")
     assert perturb(x) is x
+
+def test_perturbed_array_keeps_read_only_and_broadcast_views_raise_no_warning(monkeypatch):
+    """A read-only input gives a read-only result, a writeable one a writeable result, and a
+    view from np.broadcast_arrays (numpy warns on reading its ``flags.writeable``: seen in
+    a perturbed build's Al-Wagih claims, through ``Gains`` of ``analysis.vrf``) is perturbed
+    without a warning, read-only as numpy is making such views."""
+    x = np.linspace(0.1, 1.0, 5)
+    assert perturb(x, 1).flags.writeable
+    frozen = x.copy()
+    frozen.setflags(write=False)
+    assert not perturb(frozen, 1).flags.writeable
+    _, wide = np.broadcast_arrays(x, 0.3)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        y = perturb(wide, 1)
+        np.testing.assert_array_equal(y, perturb(np.full(5, 0.3), 1))
+        assert not y.flags.writeable
+        # the route of the build's warning: a Gains of broadcast arrays under ABGLIB_PERTURB
+        monkeypatch.setenv(ENV, "1")
+        abglib.Gains(*np.broadcast_arrays(x, 0.2))
+
 
 
 @pytest.mark.parametrize("bad", ["-1", "x", "1.5", "2147483648"])
