@@ -11,6 +11,7 @@ from abglib.common.plotting import (
     cut_off,
     describe,
     family_colour,
+    layout_problems,
     legend_outside,
     legend_overlaps,
     plt,
@@ -188,6 +189,29 @@ def test_overlapping_labels_and_a_legend_wider_than_the_figure_are_found():
     assert text_overlaps(fig) == [("std_ab_a0.3", "std_abg_a0.3")]
     cut = cut_off(fig)  # the first and last entries run over the edges
     assert len(cut) >= 2 and set(cut) == {"a very long legend entry"}
+    plt.close("all")
+
+
+def test_save_figure_returns_the_layout_problems_of_the_drawing_it_saved(tmp_path):
+    """One drawing serves the PNG and the checks: the problems save_figure returns are
+    those of the figure drawn apart (layout_problems), one message per check that found
+    anything, and a clean figure returns none."""
+
+    @styled
+    def crowded():
+        fig, ax = plt.subplots(figsize=(3, 2))
+        x = np.linspace(0.0, 1.0, 50)
+        ax.plot(x, x, label="diagonal")
+        ax.legend(loc="center")
+        ax.annotate("std_ab_a0.3", (0.5, 0.5))
+        ax.annotate("std_abg_a0.3", (0.52, 0.51))
+        return describe(fig, "a diagonal under its legend and two labels over each other")
+
+    apart = layout_problems(crowded())
+    assert [m.split(":")[0] for m in apart] == ["legend over data", "labels over each other"]
+    assert save_figure(crowded(), tmp_path / "crowded.png") == apart
+    clean = describe(_line_figure(), "two crossing lines, the legend outside on the right")
+    assert save_figure(clean, tmp_path / "clean.png") == []
     plt.close("all")
 
 
