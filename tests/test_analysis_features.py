@@ -181,8 +181,9 @@ def test_grid_peak_inside_the_last_grid_interval():
     """Poles at angle 3.14151, beyond the grid route's last interior point (pi - 3.8e-4),
     radius 0.99995: the peak (|H| 4.6e8) lies between that point and pi, where the grid
     has its largest value (4.0e8, rising towards pi); a fine brute-force grid over that
-    interval finds the same peak. (The poly route loses its digits this close to the
-    stability boundary, 2 alpha + beta = 4 - 1e-8.)"""
+    interval finds the same peak. The poly route's stationary point, this close to the
+    stability boundary (2 alpha + beta = 4 - 1e-8), is off by 3e-8 in wT: its value agrees
+    to 3e-7 (a relative change of beta by one ulp moves |H| here by 1e-7)."""
     g = Gains(1e-4, 4 - 2e-4 - 1e-8)
     w_grid, ov_grid = peak(g, method="grid")
     fine = np.linspace(np.pi - 4e-4, np.pi, 400_001)
@@ -190,6 +191,29 @@ def test_grid_peak_inside_the_last_grid_interval():
     assert m.max() > 1.1 * mag(g, np.pi)
     assert 1 + ov_grid == pytest.approx(m.max(), rel=1e-6)
     assert w_grid == pytest.approx(fine[np.argmax(m)], abs=1e-7)  # half-width 5e-5
+    w_poly, ov_poly = peak(g)
+    assert ov_poly == pytest.approx(ov_grid, rel=1e-6) and ov_poly <= ov_grid
+    assert w_poly == pytest.approx(w_grid, abs=1e-7)
+
+
+@pytest.mark.parametrize("gap", [1e-6, 1e-8, 1e-10])
+@pytest.mark.parametrize("alpha", [0.5, 1.5, 1.9])
+def test_peak_at_the_edge_of_stability_is_the_closed_form_at_pi(alpha, gap):
+    """2 alpha + beta -> 4: a pole -> z = -1, and the peak is at wT = pi, where the
+    transfer functions (seed 000, eqs 1-6) have closed forms: |H| = |2 alpha - beta| / D
+    for x_smooth, (2 alpha + beta) / D for x_pred, D = 4 - 2 alpha - beta (exact in
+    floating point here: beta is within a factor 2 of 4 - 2 alpha). The poly route
+    evaluated |H|^2 as P(q)/Q(q), whose expanded coefficients cancel below their
+    round-off there: (0, 0) at alpha 1.9, gap 1e-8, and inf at gap 1e-10."""
+    beta = (4 - 2 * alpha) - gap
+    g = Gains(alpha, beta)
+    d = (4 - 2 * alpha) - beta
+    for output, h in (("x_smooth", abs(2 * alpha - beta) / d), ("x_pred", (2 * alpha + beta) / d)):
+        for method in ("poly", "grid"):
+            w, overshoot = peak(g, output, method)
+            assert w == np.pi, (output, method)
+            # the response is evaluated at z = -1 with round-off ~1e-16 absolute in D
+            assert 1 + overshoot == pytest.approx(h, rel=1e-15 / gap), (output, method)
 
 
 @settings(max_examples=20, deadline=None)

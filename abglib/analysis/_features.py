@@ -118,12 +118,16 @@ def _peak_scalar(gains: Gains, output: str, method: str):
     if method == "poly":
         P, Q = _mag2_polys(gains, output)
         stationary = _real_roots_q(P.deriv() * Q - P * Q.deriv())
-        q = np.concatenate([[0.0, 4.0], stationary])
-        m2 = P(q) / Q(q)
+        w = _omega_of_q(np.concatenate([[0.0, 4.0], stationary]))
+        # |H|^2 at each candidate from the transfer function itself, not P(q)/Q(q): near
+        # the edge of stability (2 alpha + beta -> 4, a pole near z = -1) Q's expanded
+        # coefficients cancel to a remainder below their round-off and P/Q lost every
+        # digit (alpha 1.9, beta 0.2 - 1e-8: (0, 0) against an overshoot of 3.6e8 at pi)
+        m2 = np.abs(frequency_response(gains, output, w)) ** 2
         # the global maximum; on ties (flat response, alpha = 1) the lowest frequency
         top = np.flatnonzero(m2 >= m2.max() * (1.0 - 1e-15))
-        i = int(top[np.argmin(q[top])])
-        return float(_omega_of_q(q[i])), float(np.sqrt(m2[i]) - 1.0)
+        i = int(top[np.argmin(w[top])])
+        return float(w[i]), float(np.sqrt(m2[i]) - 1.0)
 
     def neg_mag2(w):
         return -(abs(frequency_response(gains, output, w)) ** 2)
@@ -228,8 +232,9 @@ def peak(gains: Gains, output: str = "x_smooth", method: str = "poly"):
     method : {"poly", "grid"}, default "poly"
         ``"poly"``: stationary points of :math:`|H|^2` as the real roots in
         :math:`0 < q < 4` of :math:`P'Q - PQ'` (:math:`|H|^2 = P(q)/Q(q)`), plus the
-        end points. ``"grid"``: every local maximum of a dense grid (and a rise towards
-        either end) refined by bounded Brent search.
+        end points, each evaluated by the transfer function (:func:`frequency_response`).
+        ``"grid"``: every local maximum of a dense grid (and a rise towards either end)
+        refined by bounded Brent search.
 
     Returns
     -------
