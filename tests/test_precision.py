@@ -10,7 +10,7 @@ import pytest
 
 import abglib
 from abglib._checks import AbglibValueError
-from abglib._perturb import ENV, RELATIVE, perturb, perturbation_seed
+from abglib._perturb import ENV, RELATIVE, perturb, perturb_scalar, perturbation_seed
 from abglib.common import tables
 from abglib.common.tables import csv_text, format_cell
 from abglib.reporting import precision as prec
@@ -30,12 +30,34 @@ def test_perturbation_is_small_idempotent_and_keeps_special_values():
     assert not np.array_equal(perturb(x, 1)[:4], perturb(x, 2)[:4])  # seeds differ
 
 
+def test_scalar_route_gives_the_array_routes_bits():
+    """A Gains' scalars take a route on Python's integers (perturb of a 0-d array, and
+    perturb_scalar): bit for bit the numpy route's, for random doubles of every exponent
+    and sign, and the special values it keeps (zeros, subnormals, infinities, NaN)."""
+    from abglib._perturb import _perturbed
+
+    rng = np.random.default_rng(20261202)
+    bits = rng.integers(0, 2**64 - 1, size=4000, dtype=np.uint64, endpoint=True)
+    x = bits.view(np.float64)
+    x = np.concatenate([x, [0.0, -0.0, 5e-324, -2.2e-308, np.inf, -np.inf, np.nan, 1.0, 0.3]])
+    for k in (1, 2, 7, 2**31 - 1):
+        ref = _perturbed(x, k).view(np.uint64)
+        one = np.array([perturb(np.array(v), k) for v in x]).view(np.uint64)
+        scalar = np.array([perturb_scalar(float(v), k) for v in x]).view(np.uint64)
+        np.testing.assert_array_equal(one, ref)
+        np.testing.assert_array_equal(scalar, ref)
+    frozen = np.array(0.4)
+    frozen.setflags(write=False)
+    assert perturb(np.array(0.4), 1).flags.writeable and not perturb(frozen, 1).flags.writeable
+
+
 def test_plain_arithmetic_is_untouched(monkeypatch):
     monkeypatch.delenv(ENV, raising=False)
     x = np.linspace(0.1, 1.0, 7)
     assert perturb(x) is x and perturb(0.3) == 0.3
     monkeypatch.setenv(ENV, "0")
     assert perturb(x) is x
+
 
 def test_perturbed_array_keeps_read_only_and_broadcast_views_raise_no_warning(monkeypatch):
     """A read-only input gives a read-only result, a writeable one a writeable result, and a
@@ -56,7 +78,6 @@ def test_perturbed_array_keeps_read_only_and_broadcast_views_raise_no_warning(mo
         # the route of the build's warning: a Gains of broadcast arrays under ABGLIB_PERTURB
         monkeypatch.setenv(ENV, "1")
         abglib.Gains(*np.broadcast_arrays(x, 0.2))
-
 
 
 @pytest.mark.parametrize("bad", ["-1", "x", "1.5", "2147483648"])
