@@ -119,6 +119,19 @@ def test_unity_crossing_is_eq51_and_eq52_is_its_small_angle_form(theta):
         assert gap == pytest.approx(g.beta / 12, rel=0.2)
 
 
+@pytest.mark.parametrize("beta", [1e-17, 1e-12, 1e-8, 1e-4, 1.0, 2.0])
+def test_eq51_keeps_the_digits_of_a_small_beta(beta):
+    """arccos(1 - beta) = sqrt(2 beta) (1 + beta/12 + 3 beta^2/160 + ...) to the last digit
+    for small beta (the series' next term, 5 beta^3/896, is below round-off there), and
+    pi/2, pi at beta = 1, 2; arccos of a rounded 1 - beta gave 0 at 1e-17."""
+    w = omega_unity_eq51(Gains(0.5, beta))
+    if beta < 1e-3:
+        series = np.sqrt(2 * beta) * (1 + beta / 12 + 3 * beta**2 / 160)
+        assert w == pytest.approx(series, rel=1e-15)
+    else:
+        assert w == pytest.approx(np.arccos(1.0 - beta), rel=1e-15)
+
+
 # ------------------------------------------------------------------------------ exact routes
 @settings(max_examples=25, deadline=None)
 @given(thetas, st.sampled_from([-3.0, -6.0, 0.0, 1.0]), st.sampled_from(["x_smooth", "x_pred"]))

@@ -386,12 +386,17 @@ def omega_unity_eq51(gains: Gains):
     :math:`q = 2(1 - \\cos\\omega T)`; the only nonzero root is :math:`\\cos\\omega T =
     1 - \\beta`. (For :math:`\\alpha = 1`, :math:`\\bar X \\equiv X`.)
 
+    Evaluated as :math:`2\\arcsin\\sqrt{\\beta/2}`, the same angle
+    (:math:`1 - \\cos\\omega T = 2\\sin^2(\\omega T/2)`): ``arccos(1 - beta)`` rounds
+    ``1 - beta`` first and loses the digits of a small ``beta`` (0 at ``beta = 1e-17``
+    instead of 4.47e-9; 1e-5 relative at ``1e-12``).
+
     References
     ----------
     Steelman (1978), seed 000 (``steelman1978``), eq 51, as printed.
     """
     b = _beta(gains, 0.0, 2.0, low_inclusive=True, high_inclusive=True)
-    return scalar_or_array(np.arccos(1.0 - b))
+    return scalar_or_array(2.0 * np.arcsin(np.sqrt(0.5 * b)))
 
 
 def omega_unity_eq52(gains: Gains):
