@@ -64,6 +64,47 @@ def test_lyapunov_equals_direct_summation(gains, dt):
 
 @pytest.mark.parametrize(
     "gains",
+    [
+        Gains(3e-6, 4.5e-12),  # poles crowding z = 1
+        Gains(2 - 1e-10, 5e-11),  # alpha at its edge
+        Gains(1.99999, 1e-10),
+        Gains(1.9, 0.2 - 1e-8),  # 2 alpha + beta at 4: a pole at z = -1
+        standard_ab(1 - 1e-9),
+        Gains(1.5, 0.5, 1e-15),  # a gamma far below the others
+        Gains(0.5, 0.2, 1e-17),
+    ],
+)
+def test_lyapunov_is_exact_at_the_edges_of_stability(gains):
+    """Where a float Lyapunov solver failed (scipy's bilinear route: negative variances,
+    e.g. x_smooth -2.7e-7 for 2.25e-6 at the first set; its Kronecker route: a_smooth off by
+    a factor 5 at gamma 1e-17), the exact solve agrees with the printed closed forms, whose
+    rounding is a few ulps here (Benedict and Bordner for alpha-beta; Simpson, eqs 11-14,
+    for the smoothed alpha-beta-gamma outputs; Morrison, eqs 25-27, for the standard
+    gains' predictions), and every variance is positive."""
+    exact = vrf(gains)
+    assert all(exact[k] > 0 for k in ("x_smooth", "v_smooth", "x_pred", "v_pred"))
+    if gains.gamma == 0:
+        bb = vrf_benedict_ab(gains)
+        for k in ("x_smooth", "v_smooth", "x_pred", "v_pred"):
+            assert exact[k] == pytest.approx(bb[k], rel=1e-10), k
+        return
+    simpson = vrf_simpson(gains)
+    for k in "xva":
+        assert exact[f"{k}_smooth"] == pytest.approx(simpson[k], rel=1e-10), k
+
+
+@pytest.mark.parametrize("theta", [0.999997, 0.9999])
+def test_lyapunov_is_morrisons_prediction_vrf_for_the_slowest_standard_gains(theta):
+    """Morrison's eqs 25-27 for standard gains with poles at theta, close to z = 1 (a
+    float Lyapunov solver gave x_pred -4.7e-6 for 6.2e-6 at theta 0.999997). The gains
+    are rounded from theta (alpha = 1 - theta^3), the closed form is not: a few 1e-10."""
+    exact, morrison = vrf(standard_abg(theta)), vrf_standard_abg(theta)
+    for k in "xva":
+        assert exact[f"{k}_pred"] == pytest.approx(morrison[k], rel=1e-8), k
+
+
+@pytest.mark.parametrize(
+    "gains",
     [standard_abg(0.5), standard_ab(0.6), Gains(0.5, 0.2, 0.02)],  # hand-picked stable sets
 )
 def test_lyapunov_equals_monte_carlo(gains):

@@ -3,7 +3,8 @@
 A variance reduction factor (VRF) is the steady-state variance of a tracker output per
 unit variance of white measurement noise (seed 000, "Performance measures"). The exact
 route (:func:`vrf`) solves the discrete Lyapunov equation of the state-space form
-(:mod:`abglib.analysis._statespace`); the closed forms are kept exactly as printed:
+(:mod:`abglib.analysis._statespace`) in exact rational arithmetic, each VRF rounded once
+to a float; the closed forms are kept exactly as printed:
 
 - :func:`vrf_simpson`: Simpson's eqs 11-14 (seed 000) -- the *smoothed* outputs;
 - :func:`vrf_benedict_ab`: the standard alpha-beta results that eqs 11-14 reduce to at
@@ -19,8 +20,9 @@ in seconds they are variances in (units/s)^2 and (units/s^2)^2 per unit^2 of noi
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import numpy as np
-import scipy.linalg
 
 from .._checks import AbglibValueError, check_in_range, check_positive, scalar_or_array
 from ..gains import Gains, require_gains
@@ -56,19 +58,74 @@ def _broadcast(gains, dt):
 
 
 # --------------------------------------------------------------------------- exact
+def _solve_exact(rows: list) -> list:
+    """Solve the augmented system ``rows`` (each ``[a_1 .. a_m, b]``, :class:`Fraction`)
+    by Gaussian elimination in exact arithmetic; the system must be nonsingular."""
+    m = len(rows)
+    rows = [r[:] for r in rows]
+    for c in range(m):
+        p = next(r for r in range(c, m) if rows[r][c] != 0)
+        rows[c], rows[p] = rows[p], rows[c]
+        piv = rows[c]
+        for r in range(c + 1, m):
+            f = rows[r][c]
+            if f:
+                f /= piv[c]
+                rows[r] = [x - f * y for x, y in zip(rows[r], piv, strict=True)]
+    x = [Fraction(0)] * m
+    for c in range(m - 1, -1, -1):
+        s = rows[c][m] - sum(rows[c][k] * x[k] for k in range(c + 1, m))
+        x[c] = s / rows[c][c]
+    return x
+
+
 def _vrf_one(alpha: float, beta: float, gamma: float, T: float) -> tuple[float, ...]:
-    # Solve at T = 1 (well scaled) and rescale: with S = diag(1, 1/T, 1/T^2) the state
-    # at interval T is S times the state at T = 1 (F_T = S F_1 S^-1, K_T = S K_1), so
-    # P_T = S P_1 S: velocity variances carry 1/T^2, acceleration variances 1/T^4.
-    ss = state_space(Gains(alpha, beta, gamma), 1.0)
-    # bilinear (Bartels-Stewart) route: scipy's default Kronecker solve warns of an
-    # ill-conditioned (I - F x F) when the poles crowd z = 1 (ENBW*T ~ 1e-4), although both
-    # routes give the same P to 1e-16 relative residual there
-    P = scipy.linalg.solve_discrete_lyapunov(ss.F, np.outer(ss.K, ss.K), method="bilinear")
-    Pp = ss.Phi @ P @ ss.Phi.T
-    scale = np.array([1.0, T**-2, T**-4])[: ss.n]
-    p, pp = np.diag(P) * scale, np.diag(Pp) * scale
-    if ss.n == 2:  # alpha-beta: no acceleration state, zero acceleration output
+    # The discrete Lyapunov equation P = F P F^T + K K^T at T = 1, solved in exact rational
+    # arithmetic from the gains' float values, each VRF then rounded once to a float: so
+    # every VRF is the exact one of the gains as given, on every CPU. A float solver was
+    # wrong where the problem is not: scipy's bilinear (Bartels-Stewart) route gave
+    # negative variances near the edges of stability and for gains whose poles crowd
+    # z = 1 (alpha 3e-6, beta 4.5e-12: x_smooth -2.7e-7 for 2.25e-6; Kalata's design at
+    # lambda 1e-14), and its Kronecker route lost the acceleration VRFs of a small gamma
+    # (gamma 1e-17: off by a factor 5). The symmetric P has 3 (alpha-beta) or 6 unknowns.
+    # Rescaled to T afterwards: with S = diag(1, 1/T, 1/T^2) the state at interval T is S
+    # times the state at T = 1 (F_T = S F_1 S^-1, K_T = S K_1), so P_T = S P_1 S:
+    # velocity variances carry 1/T^2, acceleration variances 1/T^4.
+    ss = state_space(Gains(alpha, beta, gamma), 1.0)  # exact in floats at T = 1
+    phi = [[Fraction(v) for v in row] for row in ss.Phi]
+    k = [Fraction(v) for v in ss.K]
+    n = len(k)
+    h_phi = [sum(Fraction(ss.H[u]) * phi[u][j] for u in range(n)) for j in range(n)]
+    f = [[phi[i][j] - k[i] * h_phi[j] for j in range(n)] for i in range(n)]  # (I - K H) Phi
+    pairs = [(i, j) for i in range(n) for j in range(i, n)]
+    col = {ij: c for c, ij in enumerate(pairs)}
+    col.update({(j, i): c for (i, j), c in list(col.items())})
+    rows = []
+    for i, j in pairs:  # P_ij - sum_kl F_ik F_jl P_kl = K_i K_j
+        row = [Fraction(0)] * (len(pairs) + 1)
+        row[col[i, j]] += 1
+        for u in range(n):
+            for v in range(n):
+                if f[i][u] and f[j][v]:
+                    row[col[u, v]] -= f[i][u] * f[j][v]
+        row[-1] = k[i] * k[j]
+        rows.append(row)
+    x = _solve_exact(rows)
+    p = [x[col[i, i]] for i in range(n)]
+    # the one-step prediction Phi s(n-1): covariance Phi P Phi^T
+    pp = [
+        sum(
+            phi[i][u] * phi[i][v] * x[col[u, v]]
+            for u in range(n)
+            for v in range(n)
+            if phi[i][u] and phi[i][v]
+        )
+        for i in range(n)
+    ]
+    scale = (1.0, T**-2, T**-4)
+    p = [float(v) * s for v, s in zip(p, scale, strict=False)]
+    pp = [float(v) * s for v, s in zip(pp, scale, strict=False)]
+    if n == 2:  # alpha-beta: no acceleration state, zero acceleration output
         return p[0], p[1], 0.0, pp[0], pp[1], 0.0
     return p[0], p[1], p[2], pp[0], pp[1], pp[2]
 
@@ -107,9 +164,13 @@ def vrf(gains: Gains, dt=1.0) -> dict:
     .. math:: P = F P F^T + K K^T,
 
     and the one-step predicted state ``Phi s(n-1)`` has covariance ``Phi P Phi^T``.
-    The diagonals are the VRFs. Simpson's closed forms (seed 000, eqs 11-14,
-    :func:`vrf_simpson`) are the smoothed entries; Morrison's (eqs 25-27, 31-32) the
-    predicted ones.
+    The diagonals are the VRFs. The equation is solved in exact rational arithmetic from
+    the gains' float values (:class:`fractions.Fraction`; 0.25 ms for alpha-beta gains,
+    0.9 ms for alpha-beta-gamma), so each VRF is the exact one of the gains as given,
+    rounded once: right at the edges of stability and for poles crowding z = 1, where a
+    float Lyapunov solver returned negative variances, and the same bits on every CPU.
+    Simpson's closed forms (seed 000, eqs 11-14, :func:`vrf_simpson`) are the smoothed
+    entries; Morrison's (eqs 25-27, 31-32) the predicted ones.
 
     References
     ----------
