@@ -78,3 +78,16 @@ def test_bad_input_messages():
         enbw_numeric(Gains(1.9, 0.5))
     with pytest.raises(ValueError, match=r"method must be one of 'integral', 'impulse', got 'fft'"):
         enbw_numeric(Gains(0.5, 0.2), method="fft")
+
+
+def test_impulse_route_refuses_a_response_longer_than_n_max():
+    """Poles 1e-9 inside the unit circle: some 9e10 samples (686 GiB) were allocated, a
+    MemoryError; the route now says what it would need, and n_max lets a user allow it."""
+    slow = Gains(0.5, 1e-9, 1e-20)
+    with pytest.raises(ValueError, match=r"needs about \d+ samples .* n_max=2000000"):
+        enbw_numeric(slow, method="impulse")
+    with pytest.raises(ValueError, match=r"n_max must be >= 16, got 3"):
+        enbw_numeric(Gains(0.5, 0.2), method="impulse", n_max=3)
+    assert enbw_numeric(Gains(0.5, 0.2), method="impulse", n_max=400) == pytest.approx(
+        enbw(Gains(0.5, 0.2)), rel=1e-12
+    )

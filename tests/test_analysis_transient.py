@@ -157,6 +157,16 @@ def test_bad_input_messages():
         transient_a2_simpson(Gains(0.5, 0.2, 0.2))  # violates seed 000 eq 47
     with pytest.raises(ValueError, match=r"n_max=100; increase n_max"):
         transient_d2(standard_abg(0.9), n_max=100)
+    # stable gains whose poles the expanded eq 40 cannot tell from the unit circle (a
+    # gamma or beta far below alpha): a clear error, not an OverflowError or numpy's
+    # "negative dimensions are not allowed"
+    for call, gains, exact in (
+        (transient_d2, Gains(0.5, 1e-16), "transient_d2_simpson"),
+        (transient_d2, Gains(0.3, 0.02, 1e-18), "transient_d2_simpson"),
+        (transient_a2, Gains(0.3, 0.02, 1e-18), "transient_a2_simpson"),
+    ):
+        with pytest.raises(ValueError, match=rf"within round-off of the unit circle.*{exact}"):
+            call(gains)
     with pytest.raises(ValueError, match=r"kind must be one of 'acceleration', 'jerk', got 'snap'"):
         steady_state_lag(Gains(0.5, 0.2), kind="snap")
     with pytest.raises(ValueError, match=r"output must be one of 'x_pred', 'x_smooth', got 'v'"):

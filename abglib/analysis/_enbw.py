@@ -27,7 +27,7 @@ import scipy.integrate
 from .._checks import AbglibValueError, scalar_or_array
 from ..engine import track
 from ..gains import Gains
-from ._stability import pole_radius, require_stable
+from ._stability import require_stable, summation_length
 from ._variance import _broadcast, vrf
 
 __all__ = ["enbw", "enbw_numeric"]
@@ -98,10 +98,11 @@ def _integral_one(alpha: float, beta: float, gamma: float) -> float:
     return total / np.pi
 
 
-def _impulse_one(alpha: float, beta: float, gamma: float) -> float:
+def _impulse_one(alpha: float, beta: float, gamma: float, n_max: int) -> float:
     """``sum h_k^2`` from :func:`abglib.track` on a unit impulse."""
-    r = pole_radius(Gains(alpha, beta, gamma))
-    n = 64 if r < 1e-3 else int(np.ceil(2.0 * np.log(1e-20) / np.log(r))) + 64
+    n = summation_length(
+        alpha, beta, gamma, n_max, "enbw_numeric(method='impulse')", "enbw (the exact route)"
+    )
     z = np.zeros(n)
     z[0] = 1.0
     h = track(z, Gains(alpha, beta, gamma)).x_pred
@@ -109,7 +110,7 @@ def _impulse_one(alpha: float, beta: float, gamma: float) -> float:
     return float(np.sum(h[1:] ** 2))
 
 
-def enbw_numeric(gains: Gains, dt=1.0, method="integral"):
+def enbw_numeric(gains: Gains, dt=1.0, method="integral", n_max=2_000_000):
     r"""One-sided ENBW in Hz by a numeric route independent of :func:`enbw`.
 
     Parameters
@@ -123,6 +124,9 @@ def enbw_numeric(gains: Gains, dt=1.0, method="integral"):
         ``|H(e^{j omega T})|^2``, ``H`` evaluated from the polynomials of seed 000,
         eqs 39-40. ``"impulse"``: sum of the squared impulse response of
         :func:`abglib.track`'s ``x_pred``.
+    n_max : int, default 2_000_000
+        ``"impulse"``: the longest response summed (the length follows from the pole
+        radius); gains that need more raise instead of filling the memory.
 
     Returns
     -------
@@ -146,8 +150,12 @@ def enbw_numeric(gains: Gains, dt=1.0, method="integral"):
         )
     a, b, g, T = _broadcast(gains, dt)
     require_stable(Gains(a, b, g), _UNSTABLE)
-    one = _integral_one if method == "integral" else _impulse_one
+    n_max = int(n_max)
+    if n_max < 16:
+        raise AbglibValueError(f"n_max must be >= 16, got {n_max}")
     out = np.empty(a.shape)
     for idx in np.ndindex(a.shape):
-        out[idx] = one(float(a[idx]), float(b[idx]), float(g[idx])) / (2.0 * float(T[idx]))
+        al, be, ga = float(a[idx]), float(b[idx]), float(g[idx])
+        s = _integral_one(al, be, ga) if method == "integral" else _impulse_one(al, be, ga, n_max)
+        out[idx] = s / (2.0 * float(T[idx]))
     return scalar_or_array(out)

@@ -129,6 +129,38 @@ def pole_radius(gains: Gains):
     return scalar_or_array(np.nanmax(np.abs(poles(gains)), axis=-1))
 
 
+def summation_length(
+    alpha: float, beta: float, gamma: float, n_max: int, route: str, instead: str
+) -> int:
+    """Samples after which an impulse response of one gain set has decayed below 1e-20 of
+    its start (twice the count for the pole radius, and 64 more), for the numeric routes
+    that sum it (``route`` names the route in the error, ``instead`` the exact one).
+
+    Raises
+    ------
+    AbglibValueError
+        When that count exceeds ``n_max``, naming the gains; and when the computed pole
+        radius is not below 1 for gains the exact Jury test calls stable: poles within
+        round-off of the unit circle, whose roots eq 40's expanded coefficients cannot
+        resolve (a gamma or beta far below alpha: gamma 1e-18 at alpha 0.3, beta 0.02),
+        where no length would do.
+    """
+    r = float(pole_radius(Gains(alpha, beta, gamma)))
+    gains = f"(alpha={alpha!r}, beta={beta!r}, gamma={gamma!r})"
+    if not r < 1.0:
+        raise AbglibValueError(
+            f"{route}: the poles of gains {gains} lie within round-off of the unit circle "
+            f"(computed radius {r!r}), so no summation length reaches the response's tail; "
+            f"use {instead}"
+        )
+    n = 64 if r < 1e-3 else int(np.ceil(2.0 * np.log(1e-20) / np.log(r))) + 64
+    if n > n_max:
+        raise AbglibValueError(
+            f"{route} needs about {n} samples for gains {gains} but n_max={n_max}; increase n_max"
+        )
+    return n
+
+
 def _jury(gains: Gains):
     r"""Jury's inequalities for eq 40 (eq 41 where gamma == 0), in cancellation-free form.
 

@@ -26,7 +26,7 @@ import numpy as np
 from .._checks import AbglibValueError, check_finite, scalar_or_array
 from ..engine import track
 from ..gains import Gains
-from ._stability import pole_radius, require_stable
+from ._stability import require_stable, summation_length
 from ._variance import _broadcast
 
 __all__ = [
@@ -152,11 +152,8 @@ def transient_a2_simpson(gains: Gains, dt=1.0) -> dict:
 
 
 # --------------------------------------------------------------------------- exact
-def _auto_length(radius: float) -> int:
-    """Samples after which a response with this pole radius is below 1e-20 (with margin)."""
-    if radius < 1e-3:
-        return 64
-    return int(np.ceil(2.0 * np.log(1e-20) / np.log(radius))) + 64
+#: the closed form beside each summed route (the exact one where summation cannot go)
+_CLOSED_FORM = {"velocity": "transient_d2_simpson", "acceleration": "transient_a2_simpson"}
 
 
 def _summed(gains, dt, n_max, rtol, kind: str) -> dict:
@@ -175,12 +172,9 @@ def _summed(gains, dt, n_max, rtol, kind: str) -> dict:
             # x_smooth, v_smooth, a_smooth, x_pred (final-value theorem, seed 000 eq 36-39)
             e_ss = ((1.0 - al) / be, al / be - 0.5, 1.0, 1.0 / be)
             diverge = np.array([e != 0.0 for e in e_ss])
-        N = _auto_length(pole_radius(Gains(al, be, ga)))
-        if N > n_max:
-            raise AbglibValueError(
-                f"direct summation needs about {N} samples for gains (alpha={al!r}, "
-                f"beta={be!r}, gamma={ga!r}) but n_max={n_max}; increase n_max"
-            )
+        N = summation_length(
+            al, be, ga, n_max, "direct summation", "the closed form " + _CLOSED_FORM[kind]
+        )
         n = np.arange(N, dtype=float)
         if kind == "velocity":
             z = n
