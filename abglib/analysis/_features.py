@@ -17,6 +17,8 @@ against each other.
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import numpy as np
 from numpy.polynomial import Polynomial
 from scipy.optimize import brentq, minimize_scalar
@@ -69,8 +71,22 @@ def _each(gains: Gains, fn):
     return tuple(np.array(col).reshape(gains.shape) for col in zip(*results, strict=True))
 
 
-def _mag2_q(coeffs_w) -> Polynomial:
-    """:math:`|p|^2` on the unit circle as a polynomial in :math:`q = |z - 1|^2`.
+def _padd(p: list, r: list) -> list:
+    n = max(len(p), len(r))
+    return [(p[i] if i < len(p) else 0) + (r[i] if i < len(r) else 0) for i in range(n)]
+
+
+def _pmul(p: list, r: list) -> list:
+    out = [0] * (len(p) + len(r) - 1)
+    for i, x in enumerate(p):
+        for j, y in enumerate(r):
+            out[i + j] += x * y
+    return out
+
+
+def _mag2_q(coeffs_w) -> list:
+    """:math:`|p|^2` on the unit circle as a polynomial in :math:`q = |z - 1|^2`
+    (coefficients in ascending powers; exact for exact input).
 
     ``coeffs_w`` are the coefficients of ``p`` in ascending powers of :math:`w = z - 1`
     (the form of seed 000, eqs 36-40). With :math:`w\\bar w = q` and
@@ -79,17 +95,22 @@ def _mag2_q(coeffs_w) -> Polynomial:
     :math:`|p|^2 = \\sum_k c_k^2 q^k + \\sum_{k<l} c_k c_l q^k s_{l-k}` -- no cancellation
     at small :math:`q`, where the features of a smoothing tracker lie.
     """
-    c = [float(v) for v in coeffs_w]
-    q = Polynomial([0.0, 1.0])
-    sums = [Polynomial([2.0]), -q]
+    c = list(coeffs_w)
+    sums = [[2], [0, -1]]
     for _ in range(2, len(c)):
-        sums.append(-q * (sums[-1] + sums[-2]))
-    out = Polynomial([0.0])
+        sums.append(_pmul([0, -1], _padd(sums[-1], sums[-2])))
+    out = [0]
     for k, ck in enumerate(c):
-        out = out + ck * ck * q**k
+        out = _padd(out, [0] * k + [ck * ck])
         for l in range(k + 1, len(c)):
-            out = out + ck * c[l] * q**k * sums[l - k]
+            out = _padd(out, [0] * k + [ck * c[l] * s for s in sums[l - k]])
     return out
+
+
+def _rounded(p: list) -> Polynomial:
+    """An exact coefficient list as a float :class:`~numpy.polynomial.Polynomial`, each
+    coefficient rounded once."""
+    return Polynomial([float(x) for x in p] or [0.0])
 
 
 def _omega_of_q(q):
@@ -107,17 +128,30 @@ def _real_roots_q(poly: Polynomial):
 
 
 def _mag2_polys(gains: Gains, output: str):
-    """``(P, Q)`` with :math:`|H|^2 = P(q)/Q(q)` for one scalar gain set (a factor
-    :math:`z^k` of the numerator has modulus 1 and drops out)."""
-    a, b, g = (np.asarray(float(v)) for v in gains)
-    num_w, _, den_w = _w_forms(a, b, g, output, 1.0, reduced=float(g) == 0.0)
+    """``(P, Q)``, exact coefficient lists (:class:`~fractions.Fraction`) with
+    :math:`|H|^2 = P(q)/Q(q)` for one scalar gain set (a factor :math:`z^k` of the
+    numerator has modulus 1 and drops out).
+
+    Exact from the gains' float values: the polynomials the poly routes solve
+    (:math:`P'Q - PQ'`, :math:`P - L^2 Q`) are differences of nearly equal terms where a
+    gain is small against another or near the edge of stability (:math:`P - Q` has the
+    coefficient :math:`2\\beta(1 - \\alpha)` as a difference of terms of order
+    :math:`\\alpha^2`: in floats the unity crossing was 9 % off at beta 1e-16); formed
+    exactly, each is rounded once (:func:`_rounded`) before its roots are found."""
+    a, b, g = (Fraction(float(v)) for v in gains)
+    num_w, _, den_w = _w_forms(a, b, g, output, 1, reduced=g == 0)
     return _mag2_q(num_w), _mag2_q(den_w)
+
+
+def _pderiv(p: list) -> list:
+    return [k * x for k, x in enumerate(p)][1:] or [0]
 
 
 def _peak_scalar(gains: Gains, output: str, method: str):
     if method == "poly":
         P, Q = _mag2_polys(gains, output)
-        stationary = _real_roots_q(P.deriv() * Q - P * Q.deriv())
+        slope = _padd(_pmul(_pderiv(P), Q), [-x for x in _pmul(P, _pderiv(Q))])
+        stationary = _real_roots_q(_rounded(slope))
         w = _omega_of_q(np.concatenate([[0.0, 4.0], stationary]))
         # |H|^2 at each candidate from the transfer function itself, not P(q)/Q(q): near
         # the edge of stability (2 alpha + beta -> 4, a pole near z = -1) Q's expanded
@@ -168,7 +202,8 @@ def _omega_at_gain_scalar(gains: Gains, level: float, output: str, method: str):
     w_pk, _ = _peak_scalar(gains, output, method)
     if method == "poly":
         P, Q = _mag2_polys(gains, output)
-        w = _omega_of_q(_real_roots_q(P - level**2 * Q))
+        lev2 = Fraction(level**2)
+        w = _omega_of_q(_real_roots_q(_rounded(_padd(P, [-lev2 * x for x in Q]))))
         w = w[w > w_pk * (1 + 1e-9) + 1e-12]
         return (float(w.min()) if w.size else float("nan"),)
 

@@ -52,14 +52,18 @@ def _w_forms(alpha, beta, gamma, output, dt, reduced):
     Returns ``(num_w, z_factor, den_w)``: the numerator is ``z**z_factor * sum num_w[k] w**k``.
     Coefficients are arrays broadcast over the bank. ``reduced`` divides numerator and
     denominator by the common factor ``w`` that every output has when ``gamma == 0``.
+    Scalars of another number type (:class:`fractions.Fraction`, with an integer ``dt``)
+    give coefficients of that type: the exact route of :mod:`._features`.
     """
-    one = np.ones_like(alpha)
-    zero = np.zeros_like(alpha)
-    g2 = gamma / 2.0
+    if isinstance(alpha, np.ndarray):
+        one, zero = np.ones_like(alpha), np.zeros_like(alpha)
+    else:
+        one, zero = alpha * 0 + 1, alpha * 0
+    g2 = gamma / 2  # integer literals: the same bits as 2.0, 3.0 in floats, exact otherwise
     if not reduced:
         # eq 40: (z-1)^3 + a (z-1)^2 + (b + g/2) z (z-1) + g z, with z = w + 1:
         #        w^3 + (a + b + g/2) w^2 + (b + 3g/2) w + g
-        den = [gamma, beta + 3.0 * g2, alpha + beta + g2, one]
+        den = [gamma, beta + 3 * g2, alpha + beta + g2, one]
         num, zf = {
             # eq 36: z [a w^2 + (b + g/2) w + g]
             "x_smooth": ([gamma, beta + g2, alpha], 1),
@@ -68,7 +72,7 @@ def _w_forms(alpha, beta, gamma, output, dt, reduced):
             # eq 38: z g w^2 / T^2
             "a_smooth": ([zero, zero, gamma / dt**2], 1),
             # eq 39: (a + b + g/2) w^2 + (b + 3g/2) w + g
-            "x_pred": ([gamma, beta + 3.0 * g2, alpha + beta + g2], 0),
+            "x_pred": ([gamma, beta + 3 * g2, alpha + beta + g2], 0),
             # eq 5 with eqs 37-38: V_p = z^-1 (Vbar + T Abar) = [(b + g) w^2 + g w] / T
             "v_pred": ([zero, gamma / dt, (beta + gamma) / dt], 0),
             # eq 6 with eq 38: A_p = z^-1 Abar = g w^2 / T^2

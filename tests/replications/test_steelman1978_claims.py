@@ -658,10 +658,11 @@ def test_approximation_claims(s, key, comparison):
 
 @claim_test(DOC, "claim.cubic_0707")
 def test_0707_is_a_cubic(s):
-    from abglib.analysis._features import _mag2_polys
+    from abglib.analysis._features import _mag2_polys, _rounded
 
     for alpha in (0.1, 0.3, 0.488):
-        P, Q = _mag2_polys(std_typed(alpha), "x_smooth")  # |X̄/X|² = P(q)/Q(q), q = 2 - 2cos ωT
+        # |X̄/X|² = P(q)/Q(q), q = 2 - 2cos ωT (exact coefficients, rounded once)
+        P, Q = (_rounded(p) for p in _mag2_polys(std_typed(alpha), "x_smooth"))
         assert (P - 0.5 * Q).degree() == 3
         deg, root, exact = s.cubic[alpha]
         # the fitted root holds to ~2e-9 relative at alpha = 0.1 (|N|^2 - |D|^2/2 cancels
