@@ -27,7 +27,7 @@ import scipy.integrate
 from .._checks import AbglibValueError, scalar_or_array
 from ..engine import track
 from ..gains import Gains
-from ._stability import require_stable, summation_length
+from ._stability import check_n_max, require_stable, summation_length
 from ._variance import _broadcast, vrf
 
 __all__ = ["enbw", "enbw_numeric"]
@@ -150,9 +150,7 @@ def enbw_numeric(gains: Gains, dt=1.0, method="integral", n_max=2_000_000):
         )
     a, b, g, T = _broadcast(gains, dt)
     require_stable(Gains(a, b, g), _UNSTABLE)
-    n_max = int(n_max)
-    if n_max < 16:
-        raise AbglibValueError(f"n_max must be >= 16, got {n_max}")
+    n_max = check_n_max(n_max)
     out = np.empty(a.shape)
     for idx in np.ndindex(a.shape):
         al, be, ga = float(a[idx]), float(b[idx]), float(g[idx])

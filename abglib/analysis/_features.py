@@ -21,6 +21,7 @@ from fractions import Fraction
 
 import numpy as np
 from numpy.polynomial import Polynomial
+from numpy.polynomial import polynomial as P
 from scipy.optimize import brentq, minimize_scalar
 
 from .._checks import AbglibValueError, check_finite, check_in_range, describe, scalar_or_array
@@ -71,19 +72,6 @@ def _each(gains: Gains, fn):
     return tuple(np.array(col).reshape(gains.shape) for col in zip(*results, strict=True))
 
 
-def _padd(p: list, r: list) -> list:
-    n = max(len(p), len(r))
-    return [(p[i] if i < len(p) else 0) + (r[i] if i < len(r) else 0) for i in range(n)]
-
-
-def _pmul(p: list, r: list) -> list:
-    out = [0] * (len(p) + len(r) - 1)
-    for i, x in enumerate(p):
-        for j, y in enumerate(r):
-            out[i + j] += x * y
-    return out
-
-
 def _mag2_q(coeffs_w) -> list:
     """:math:`|p|^2` on the unit circle as a polynomial in :math:`q = |z - 1|^2`
     (coefficients in ascending powers; exact for exact input).
@@ -95,16 +83,19 @@ def _mag2_q(coeffs_w) -> list:
     :math:`|p|^2 = \\sum_k c_k^2 q^k + \\sum_{k<l} c_k c_l q^k s_{l-k}` -- no cancellation
     at small :math:`q`, where the features of a smoothing tracker lie.
     """
-    c = list(coeffs_w)
-    sums = [[2], [0, -1]]
+    # Fractions throughout: numpy's series functions keep them (object arrays), but make
+    # a series of plain integers float
+    c = [Fraction(v) for v in coeffs_w]
+    zero, minus_q = Fraction(0), [Fraction(0), Fraction(-1)]
+    sums = [[Fraction(2)], minus_q]
     for _ in range(2, len(c)):
-        sums.append(_pmul([0, -1], _padd(sums[-1], sums[-2])))
-    out = [0]
+        sums.append(P.polymul(minus_q, P.polyadd(sums[-1], sums[-2])))
+    out = [zero]
     for k, ck in enumerate(c):
-        out = _padd(out, [0] * k + [ck * ck])
+        out = P.polyadd(out, [zero] * k + [ck * ck])
         for l in range(k + 1, len(c)):
-            out = _padd(out, [0] * k + [ck * c[l] * s for s in sums[l - k]])
-    return out
+            out = P.polyadd(out, [zero] * k + [ck * c[l] * s for s in sums[l - k]])
+    return list(out)
 
 
 def _rounded(p: list) -> Polynomial:
@@ -143,14 +134,10 @@ def _mag2_polys(gains: Gains, output: str):
     return _mag2_q(num_w), _mag2_q(den_w)
 
 
-def _pderiv(p: list) -> list:
-    return [k * x for k, x in enumerate(p)][1:] or [0]
-
-
 def _peak_scalar(gains: Gains, output: str, method: str):
     if method == "poly":
-        P, Q = _mag2_polys(gains, output)
-        slope = _padd(_pmul(_pderiv(P), Q), [-x for x in _pmul(P, _pderiv(Q))])
+        num, den = _mag2_polys(gains, output)
+        slope = P.polysub(P.polymul(P.polyder(num), den), P.polymul(num, P.polyder(den)))
         stationary = _real_roots_q(_rounded(slope))
         w = _omega_of_q(np.concatenate([[0.0, 4.0], stationary]))
         # |H|^2 at each candidate from the transfer function itself, not P(q)/Q(q): near
@@ -201,9 +188,9 @@ def _peak_scalar(gains: Gains, output: str, method: str):
 def _omega_at_gain_scalar(gains: Gains, level: float, output: str, method: str):
     w_pk, _ = _peak_scalar(gains, output, method)
     if method == "poly":
-        P, Q = _mag2_polys(gains, output)
-        lev2 = Fraction(level**2)
-        w = _omega_of_q(_real_roots_q(_rounded(_padd(P, [-lev2 * x for x in Q]))))
+        num, den = _mag2_polys(gains, output)
+        excess = P.polysub(num, P.polymul([Fraction(level**2)], den))
+        w = _omega_of_q(_real_roots_q(_rounded(excess)))
         w = w[w > w_pk * (1 + 1e-9) + 1e-12]
         return (float(w.min()) if w.size else float("nan"),)
 

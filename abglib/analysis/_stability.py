@@ -129,6 +129,15 @@ def pole_radius(gains: Gains):
     return scalar_or_array(np.nanmax(np.abs(poles(gains)), axis=-1))
 
 
+def check_n_max(n_max) -> int:
+    """``n_max`` of a route that sums an impulse response (:func:`summation_length`), as
+    an int, or a clear error."""
+    n = int(n_max)
+    if n < 16:
+        raise AbglibValueError(f"n_max must be >= 16, got {n_max}")
+    return n
+
+
 def summation_length(
     alpha: float, beta: float, gamma: float, n_max: int, route: str, instead: str
 ) -> int:

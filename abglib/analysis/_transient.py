@@ -26,7 +26,7 @@ import numpy as np
 from .._checks import AbglibValueError, check_finite, scalar_or_array
 from ..engine import track
 from ..gains import Gains
-from ._stability import require_stable, summation_length
+from ._stability import check_n_max, require_stable, summation_length
 from ._variance import _broadcast
 
 __all__ = [
@@ -159,9 +159,7 @@ _CLOSED_FORM = {"velocity": "transient_d2_simpson", "acceleration": "transient_a
 def _summed(gains, dt, n_max, rtol, kind: str) -> dict:
     a, b, g, T = _broadcast(gains, dt)
     require_stable(Gains(a, b, g), _UNSTABLE)
-    n_max = int(n_max)
-    if n_max < 16:
-        raise AbglibValueError(f"n_max must be >= 16, got {n_max}")
+    n_max = check_n_max(n_max)
     keys = ("x", "v", "a", "x_pred")
     out = np.empty(a.shape + (len(keys),))
     for idx in np.ndindex(a.shape):
