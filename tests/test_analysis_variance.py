@@ -93,6 +93,73 @@ def test_lyapunov_is_exact_at_the_edges_of_stability(gains):
         assert exact[f"{k}_smooth"] == pytest.approx(simpson[k], rel=1e-10), k
 
 
+def kronecker_vrf(gains) -> tuple[float, ...]:
+    """The VRFs at T = 1 by an independent exact route: the full n^2 x n^2 Kronecker system
+    ``(I - F (x) F) vec P = vec K K^T`` (no symmetry used) with ``F = (I - K H) Phi`` formed
+    in :class:`fractions.Fraction` from the state-space form's Phi, H and K (numpy's F is
+    rounded), solved by plain Gauss-Jordan elimination, then ``Phi P Phi^T``; each VRF
+    rounded once (``float(Fraction)``)."""
+    from fractions import Fraction
+
+    from abglib.analysis._statespace import state_space
+
+    ss = state_space(gains, 1.0)
+    n = len(ss.K)
+    k = [Fraction(v) for v in ss.K]
+    h = [Fraction(v) for v in ss.H]
+    phi = [[Fraction(v) for v in row] for row in ss.Phi]
+    h_phi = [sum(h[u] * phi[u][j] for u in range(n)) for j in range(n)]
+    f = [[phi[i][j] - k[i] * h_phi[j] for j in range(n)] for i in range(n)]
+    m = n * n
+    a = [
+        [Fraction(int(r == c)) - f[r // n][c // n] * f[r % n][c % n] for c in range(m)]
+        + [k[r // n] * k[r % n]]
+        for r in range(m)
+    ]
+    for c in range(m):
+        p = next(r for r in range(c, m) if a[r][c] != 0)
+        a[c], a[p] = a[p], a[c]
+        for r in range(m):
+            if r != c and a[r][c] != 0:
+                q = a[r][c] / a[c][c]
+                a[r] = [x - q * y for x, y in zip(a[r], a[c], strict=True)]
+    p = [[a[i * n + j][m] / a[i * n + j][i * n + j] for j in range(n)] for i in range(n)]
+    smooth = [p[i][i] for i in range(n)]
+    pred = [
+        sum(phi[i][u] * phi[i][v] * p[u][v] for u in range(n) for v in range(n)) for i in range(n)
+    ]
+    out = [float(v) for v in (*smooth, *pred)]
+    if n == 2:
+        return out[0], out[1], 0.0, out[2], out[3], 0.0
+    return tuple(out)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.one_of(stable_ab, stable_abg))
+def test_lyapunov_is_the_correctly_rounded_exact_solution(gains):
+    """Bit for bit the correctly rounded exact VRFs of another exact route (the full
+    Kronecker system in fractions): the integer (Bareiss) solve of the symmetric system
+    changes the route, not one bit of the result."""
+    exact = vrf(gains)
+    assert tuple(exact[key] for key in VRF_KEYS) == kronecker_vrf(gains)
+
+
+@pytest.mark.parametrize(
+    "gains",
+    [
+        Gains(3e-6, 4.5e-12),
+        Gains(1.9, 0.2 - 1e-8),
+        Gains(0.5, 0.2, 1e-17),
+        Gains(0.5, 1e-16, 1e-18),
+        Gains(1e-7, 1e-14, 1e-22),
+        Gains(0.5, 0.2, 1e-300),  # the integers of the exact solve run to thousands of bits
+    ],
+)
+def test_lyapunov_is_the_correctly_rounded_exact_solution_at_the_edges(gains):
+    exact = vrf(gains)
+    assert tuple(exact[key] for key in VRF_KEYS) == kronecker_vrf(gains)
+
+
 @pytest.mark.parametrize("theta", [0.999997, 0.9999])
 def test_lyapunov_is_morrisons_prediction_vrf_for_the_slowest_standard_gains(theta):
     """Morrison's eqs 25-27 for standard gains with poles at theta, close to z = 1 (a

@@ -174,6 +174,32 @@ def test_stated_reads_back_the_provenance_a_page_was_rendered_with(tmp_path):
     assert stated(tmp_path / "plain.html") == {}
 
 
+@pytest.mark.parametrize(
+    "heading",
+    ['<h2 id="provenance">', "<H2 class='x' ID='provenance'>", "<h2 id=provenance>"],
+)
+def test_stated_reads_only_the_first_table_after_the_heading(tmp_path, heading):
+    """Whatever the heading's spelling, only the table after it is read: not a table
+    before it, not one after it, not a decoy in a figure's markup."""
+    row = "<tr><td>{}</td><td>{}</td></tr>"
+    page = (
+        "<table>"
+        + row.format("abglib version", "before")
+        + "</table>"
+        + '<svg><g id="provenance"></g></svg>' * 3
+        + heading
+        + "Provenance</h2><p>text</p><table>"
+        + row.format("item", "value")
+        + row.format("abglib version", "9.9.9")
+        + "</table>"
+        + "<table>"
+        + row.format("abglib version", "after")
+        + "</table>"
+    )
+    (tmp_path / "p.html").write_text(page, encoding="utf-8")
+    assert stated(tmp_path / "p.html") == {"item": "value", "abglib version": "9.9.9"}
+
+
 def test_release_problems_names_every_disagreement(tmp_path):
     good = tmp_path / "good"
     _index(good, _prov())

@@ -24,6 +24,7 @@ pages'; ``abglib release`` refuses to cut a release while there is any.
 from __future__ import annotations
 
 import platform
+import re
 import subprocess
 from collections.abc import Mapping
 from html.parser import HTMLParser
@@ -160,6 +161,16 @@ def to_markdown(prov: Mapping) -> str:
 SAME_IN_A_RELEASE = ("abglib version", "git commit", "python", *PACKAGES)
 
 
+class _TableRead(Exception):
+    """Raised by :class:`_ProvenanceTable` at the end of the table: the rest of the page
+    is not parsed."""
+
+
+#: Where a page's provenance heading may start (the parser confirms it): parsing starts
+#: there, not at the top of a page whose figures are thousands of SVG elements.
+_HEADING = re.compile(r"<h2\b[^>]*\bid\s*=\s*[\"']?provenance\b", re.IGNORECASE)
+
+
 class _ProvenanceTable(HTMLParser):
     """The ``item | value`` rows of the first table after ``<h2 id="provenance">``."""
 
@@ -192,6 +203,7 @@ class _ProvenanceTable(HTMLParser):
             self._row = None
         elif tag == "table":
             self.state = "done"
+            raise _TableRead
 
     def handle_data(self, data):
         if self._cell is not None:
@@ -213,9 +225,15 @@ def stated(page) -> dict[str, str]:
         E.g. ``{"abglib version": "0.4.0", "git commit": "...", "numpy": "2.4.6", ...}``;
         empty when the page has no provenance table.
     """
+    text = Path(page).read_text(encoding="utf-8")
+    heading = _HEADING.search(text)
     parser = _ProvenanceTable()
-    parser.feed(Path(page).read_text(encoding="utf-8"))
-    parser.close()
+    try:
+        # from the heading on (a page without one is parsed whole: the parser decides)
+        parser.feed(text[heading.start() :] if heading else text)
+        parser.close()
+    except _TableRead:
+        pass
     return parser.rows
 
 
