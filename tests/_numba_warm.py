@@ -47,19 +47,40 @@ NUMBA_BASE = Path(
 
 def engine() -> None:
     """The tracker (batched and per series, both orders), methods M1-M5 and the benchmark
-    metrics, as the workflow's fork server loads them."""
+    metrics, as the workflow's fork server loads them; then what the fork server leaves
+    out and the test workers compiled on their own (issue 24, 2026-12-03: 3.9-5.3 s a
+    worker, the threaded kernels in both): the threaded batch kernels (8 series or more
+    and 65,536 samples or more, abglib.engine) and M4/M5 on read-only measurements."""
+    import numpy as np
+
+    from abglib import methods, track
+    from abglib.design import standard_from_alpha
     from abglib.reporting.workers import load_kernels
 
     load_kernels()
+    z = np.cumsum(np.ones((64, 1024)), axis=-1)
+    for order in (2, 3):
+        track(z, standard_from_alpha(0.5, order=order), dt=1.0)
+    z = np.cumsum(np.ones((2, 32)), axis=-1)
+    z.flags.writeable = False
+    methods.m4(z, 0.5, 4, np.linspace(0.1, 0.9, 3))
+    methods.m5(z, np.linspace(0.1, 0.9, 3))
 
 
 def antenna() -> None:
     """The antenna's compiled loops (Riccati, Kalman, phase ensembles), by judging its claims
-    on the small config, as a small build's antenna claims job does."""
+    on the small config, as a small build's antenna claims job does, and the alpha-beta-gamma
+    phase ensemble of its study (which both test workers compiled each)."""
+    from abglib import design
     from abglib.replications import judge_claims
-    from tests.replications.conftest import published_paths, small_config
+    from abglib.replications.antenna.ensemble import simulate_phases
+    from tests.replications.conftest import published_paths, small_config, study_for
 
     judge_claims("antenna", small_config(), published_paths("antenna"), None)
+    s = study_for("antenna", small_config())
+    abg = design.huang_for_enbw(0.01, s.dt, rule="type2", order=3)
+    kw = dict(amplitude=10.0, omega=0.1, n_steps=8, mode="abg", abg=abg)
+    simulate_phases(s.params, s.ctrl, phases=[0.0, 1.0], **kw)
 
 
 PARTS = {"engine": engine, "antenna": antenna}
