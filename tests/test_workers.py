@@ -58,12 +58,19 @@ def script(tmp_path):
     return path
 
 
+#: The tests that run a job through the fork server share one worker (pytest-xdist
+#: ``--dist loadgroup``) and so one server: each server imports the scientific stack once
+#: (about 3.5 CPU-s), and on two workers the session paid for two.
+fork_server = pytest.mark.xdist_group("fork_server")
+
+
 def _read(tmp_path, name):
     import json
 
     return json.loads((tmp_path / f"{name}.json").read_text(encoding="utf-8"))
 
 
+@fork_server
 @pytest.mark.slow
 def test_a_script_runs_in_a_fresh_process_of_its_own(script, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
@@ -81,6 +88,7 @@ def test_a_script_runs_in_a_fresh_process_of_its_own(script, tmp_path, monkeypat
     assert a["frozen"] > 10_000 and b["frozen"] > 10_000
 
 
+@fork_server
 @pytest.mark.slow  # a fresh process (the fork server)
 def test_a_failing_script_names_the_error_and_its_log(script, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
@@ -116,6 +124,7 @@ def test_a_missing_script_is_named(tmp_path):
         run_script(tmp_path / "nope.py", _job(tmp_path, "a"))
 
 
+@fork_server
 @pytest.mark.slow  # starts the fork server
 def test_warm_up_starts_the_fork_server_and_jobs_still_run(tmp_path):
     """warm_up (the workflow's onstart) starts the server at once, without waiting for
@@ -137,6 +146,7 @@ def test_warm_up_starts_the_fork_server_and_jobs_still_run(tmp_path):
     assert json.loads((tmp_path / "w1.json").read_text())["pid"] != os.getpid()
 
 
+@fork_server
 @pytest.mark.slow  # a job in the fork server (started here, ~3 s of imports)
 def test_a_job_keeps_to_its_threads(tmp_path, script):
     # the job's threads (1 here) bound numba's parallel loops in its worker
