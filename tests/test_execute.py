@@ -258,6 +258,9 @@ def test_in_process_and_kernel_give_the_same_notebook(tmp_path):
         "import sys\nimport pandas as pd\nfrom IPython.display import HTML, Markdown, display\n"
         "print('out')\nprint('err', file=sys.stderr)\n"
         "display(Markdown('*m*'), metadata={'abstract': True})",
+        # one stream in two of the kernel's messages (a flush between the writes, as its
+        # output thread does when it fires in between under load): still one output
+        "sys.stdout.write('o')\nsys.stdout.flush()\nprint('ut')",
         "df = pd.DataFrame({'a': [1.23456789, None], 'b': ['x', 'y']})\ndisplay(df)\ndf",
         "pd.DataFrame([list(range(30))] * 2)",
         "h = display(HTML('1'), display_id='d')\nh.update(HTML('2'))\n{'k': (1, 2.5)}",
@@ -282,3 +285,26 @@ def test_another_threads_prints_stay_out_of_the_notebook(tmp_path, capsys):
     execute_notebook(nb, cwd=tmp_path)
     assert outputs(nb) == [("stream", "stdout", "from the cell\n")]
     assert "from another thread" in capsys.readouterr().out
+
+
+def test_merge_streams_joins_only_consecutive_outputs_of_one_stream():
+    from abglib.reporting.render import merge_streams
+
+    def stream(name, text):
+        return nbformat.v4.new_output("stream", name=name, text=text)
+
+    nb = notebook("pass")
+    shown = nbformat.v4.new_output("display_data", data={"text/plain": "x"})
+    nb.cells[1].outputs = [
+        stream("stdout", "a"), stream("stdout", "b\n"), stream("stderr", "e"),
+        stream("stdout", "c"), shown, stream("stdout", "d"), stream("stdout", "e"),
+    ]  # fmt: skip
+    merge_streams(nb)
+    got = [(o.output_type, o.get("name"), o.get("text")) for o in nb.cells[1].outputs]
+    assert got == [
+        ("stream", "stdout", "ab\n"),
+        ("stream", "stderr", "e"),
+        ("stream", "stdout", "c"),
+        ("display_data", None, None),
+        ("stream", "stdout", "de"),
+    ]

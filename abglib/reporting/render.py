@@ -22,6 +22,7 @@ import pandas as pd
 __all__ = [
     "ENGINES",
     "inject_parameters",
+    "merge_streams",
     "render_notebook",
     "report_context",
     "strip_volatile",
@@ -189,6 +190,32 @@ def _execute_in_kernel(nb, cwd, timeout) -> None:
         finally:
             if km.has_kernel:
                 km.shutdown_kernel(now=False)
+    merge_streams(nb)
+
+
+def merge_streams(nb) -> None:
+    """Merge, in place, each run of consecutive ``stream`` outputs of one name (stdout,
+    stderr) into one output, as the in-process engine records them
+    (:mod:`abglib.reporting.execute`). A kernel sends a stream in as many messages as
+    its output thread flushed it in, which depends on timing: ``print('out')`` is two
+    writes, and a flush between them under load made two outputs ("out", "\\n"), so the
+    notebook differed from run to run and from the in-process engine's."""
+    for cell in nb.cells:
+        if cell.cell_type != "code":
+            continue
+        merged = []
+        for out in cell.outputs:
+            last = merged[-1] if merged else None
+            if (
+                out.get("output_type") == "stream"
+                and last is not None
+                and last.get("output_type") == "stream"
+                and last.get("name") == out.get("name")
+            ):
+                last["text"] = last.get("text", "") + out.get("text", "")
+                continue
+            merged.append(out)
+        cell.outputs = merged
 
 
 def report_context(doc, version, input, output, *, repo, nav, made_by, provenance, settings=None):
