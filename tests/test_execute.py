@@ -287,6 +287,21 @@ def test_another_threads_prints_stay_out_of_the_notebook(tmp_path, capsys):
     assert "from another thread" in capsys.readouterr().out
 
 
+@pytest.mark.slow  # a kernel
+def test_the_kernel_draws_its_figures_whatever_backend_the_caller_set(tmp_path, monkeypatch):
+    """A workflow job runs under MPLBACKEND=Agg (abglib.reporting._server_env); the
+    kernel it starts still shows a cell's figure, as the in-process engine does."""
+    require_module("nbclient")  # skips without it; fails under CI
+    from abglib.reporting.render import _execute_in_kernel
+
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    nb = notebook("import matplotlib.pyplot as plt\nplt.plot([0, 1]);")
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Py", "language": "python"}
+    _execute_in_kernel(nb, tmp_path, 120)
+    assert [o.output_type for o in nb.cells[1].outputs] == ["display_data"]
+    assert "image/png" in nb.cells[1].outputs[0].data
+
+
 def test_merge_streams_joins_only_consecutive_outputs_of_one_stream():
     from abglib.reporting.render import merge_streams
 

@@ -24,7 +24,8 @@ json._abglib_marker = True  # a module-level change a later job must not see
 with open(snakemake.output.out, "w") as fh:
     json.dump({"pid": os.getpid(), "value": snakemake.params.value,
                "wildcard": snakemake.wildcards.w, "leaked": leaked, "cwd": os.getcwd(),
-               "numba_threads": numba.get_num_threads(), "frozen": gc.get_freeze_count()}, fh)
+               "numba_threads": numba.get_num_threads(), "frozen": gc.get_freeze_count(),
+               "mplbackend": os.environ.get("MPLBACKEND")}, fh)
 """
 
 
@@ -74,6 +75,7 @@ def _read(tmp_path, name):
 @pytest.mark.slow
 def test_a_script_runs_in_a_fresh_process_of_its_own(script, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("MPLBACKEND", raising=False)
     run_script(script, _job(tmp_path, "a", value=2.5))
     run_script(script, _job(tmp_path, "b", value=3))
     a, b = _read(tmp_path, "a"), _read(tmp_path, "b")
@@ -82,6 +84,8 @@ def test_a_script_runs_in_a_fresh_process_of_its_own(script, tmp_path, monkeypat
     # what one job changed in a module is not seen by the next (each is a new fork)
     assert not a["leaked"] and not b["leaked"]
     assert a["cwd"] == str(tmp_path)
+    # jobs draw on Agg (the server's environment), and the caller's is left alone
+    assert a["mplbackend"] == "Agg" and "MPLBACKEND" not in os.environ
     assert "to the log" in (tmp_path / "a.log").read_text(encoding="utf-8")
     # the server's preloaded objects are frozen (workers.freeze_preloaded): a job's
     # collections skip them (the stack's modules alone are far over 10,000 objects)

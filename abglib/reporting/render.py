@@ -173,6 +173,7 @@ def render_notebook(
 
 def _execute_in_kernel(nb, cwd, timeout) -> None:
     """Execute ``nb`` in a Jupyter kernel (a new process) through nbclient."""
+    import os
     import tempfile
 
     import nbclient
@@ -185,8 +186,12 @@ def _execute_in_kernel(nb, cwd, timeout) -> None:
         client = nbclient.NotebookClient(
             nb, km=km, timeout=timeout, resources={"metadata": {"path": str(cwd)}}
         )
+        # the kernel draws a cell's figures with its own inline backend, as the in-process
+        # engine shows them: a backend the caller set (MPLBACKEND=Agg in a workflow job)
+        # would leave them undrawn
+        env = {k: v for k, v in os.environ.items() if k != "MPLBACKEND"}
         try:
-            client.execute()
+            client.execute(env=env)
         finally:
             if km.has_kernel:
                 km.shutdown_kernel(now=False)

@@ -46,6 +46,8 @@ __all__ = [
 #: Modules the fork server imports once, so that no job pays for them (a module that
 #: fails to import is skipped: the job that needs it will say why).
 PRELOAD = [
+    # first: the server's own environment (matplotlib's backend), before anything reads it
+    "abglib.reporting._server_env",
     "numpy",
     "scipy.linalg",
     "scipy.signal",
@@ -105,7 +107,6 @@ def _context():
     global _CONTEXT
     with _CONTEXT_LOCK:
         if _CONTEXT is None:
-            os.environ.setdefault("MPLBACKEND", "Agg")
             ctx = multiprocessing.get_context("forkserver")
             ctx.set_forkserver_preload(PRELOAD)
             _CONTEXT = ctx
