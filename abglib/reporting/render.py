@@ -203,8 +203,10 @@ def merge_streams(nb) -> None:
     stderr) into one output, as the in-process engine records them
     (:mod:`abglib.reporting.execute`). A kernel sends a stream in as many messages as
     its output thread flushed it in, which depends on timing: ``print('out')`` is two
-    writes, and a flush between them under load made two outputs ("out", "\\n"), so the
-    notebook differed from run to run and from the in-process engine's."""
+    writes, and a flush between them gives two outputs ("out", "\\n"), so the notebook
+    could differ from run to run and from the in-process engine's (the likely cause of
+    one failure of the engines' comparison test in a loaded full run, 2026-12-03; the
+    test now forces such a flush)."""
     for cell in nb.cells:
         if cell.cell_type != "code":
             continue
