@@ -48,7 +48,13 @@ def _weights(q, r, ny, nu):
 
 
 def riccati_iterate(a, b, qx, r, tol=1e-13, max_iter=200000):
-    """Solve eq 2.12 by iterating it from ``P = Qx`` (value iteration).
+    """Solve eq 2.12 by iterating it from ``P = Qx`` (value iteration), then polish.
+
+    The iteration runs on compiled small-matrix loops (:func:`_riccati_loops`, no BLAS:
+    the same bits on every CPU), and :func:`newton_polish` (scipy's Lyapunov solver)
+    refines where it stops to the fixed point. Until v0.4.3 the iteration ran on numba's
+    BLAS/LAPACK (``@`` and ``np.linalg.solve``: some 12 s of compilation on a cold cache);
+    the antenna's 11 default tables are byte-identical either way.
 
     Parameters
     ----------
@@ -64,7 +70,7 @@ def riccati_iterate(a, b, qx, r, tol=1e-13, max_iter=200000):
     """
     p = np.array(qx, dtype=float)
     rinv_bt = np.ascontiguousarray(np.linalg.solve(r, b.T))
-    p, ok = _riccati_loop(
+    p, ok = _riccati_loops(
         np.ascontiguousarray(a, dtype=float),
         np.ascontiguousarray(b, dtype=float),
         rinv_bt,
@@ -89,12 +95,13 @@ def newton_polish(a, b, qx, r, p, steps: int = 4):
     The value iteration stops when one step changes P by less than ``tol``; when it
     converges slowly (Q/R = 10^4 and a lightly damped antenna: rate close to 1), the
     distance to the fixed point is many times ``tol`` and where it stops depends on the
-    round-off of the BLAS kernel (3.6e-13 relative between the default OpenBLAS kernel and
-    ``OPENBLAS_CORETYPE=Prescott`` at beta_a = 0.02, enough to move K across a grid line of
-    :func:`.ensemble.snap`). Each Newton step solves the closed-loop Lyapunov equation
-    ``P = Acl^T P Acl + Qx + K^T R K`` (``K = (R + B^T P B)^-1 B^T P A``) and converges
-    quadratically, so the result is the fixed point to within round-off, whatever the
-    kernel. A step is kept only while the residual of eq 2.12 decreases.
+    round-off of the iteration's arithmetic (3.6e-13 relative between the default OpenBLAS
+    kernel and ``OPENBLAS_CORETYPE=Prescott`` at beta_a = 0.02, when the iteration ran on
+    BLAS, enough to move K across a grid line of :func:`.ensemble.snap`). Each Newton step
+    solves the closed-loop Lyapunov equation ``P = Acl^T P Acl + Qx + K^T R K``
+    (``K = (R + B^T P B)^-1 B^T P A``) and converges quadratically, so the result is the
+    fixed point to within round-off, whatever the kernel. A step is kept only while the
+    residual of eq 2.12 decreases.
     """
     import scipy.linalg
 
@@ -113,29 +120,14 @@ def newton_polish(a, b, qx, r, p, steps: int = 4):
     return p
 
 
-@njit(cache=True)
-def _riccati_loop(a, b, rinv_bt, qx, p, tol, max_iter):
-    # the iteration of riccati_iterate, compiled (the same formulas, step by step)
-    n = a.shape[0]
-    at = np.ascontiguousarray(a.T)
-    brb = b @ rinv_bt
-    for _ in range(max_iter):
-        p_new = qx + at @ p @ np.linalg.solve(np.eye(n) + brb @ p, a)
-        p_new = 0.5 * (p_new + p_new.T)
-        if np.max(np.abs(p_new - p)) <= tol * max(1.0, np.max(np.abs(p_new))):
-            return p_new, True
-        p = p_new
-    return p, False
-
-
 def riccati_solve(a, b, qx, r, tol=1e-13, max_iter=200000):
-    """:func:`riccati_iterate` on compiled small-matrix loops (:mod:`._smallmat`), about
-    10x faster: the value iteration and the Newton polish with the same formulas, the
-    Lyapunov equation by its Kronecker system as scipy's ``direct`` method.
+    """:func:`riccati_iterate` with its Newton polish on compiled small-matrix loops too
+    (:mod:`._smallmat`), about 10x faster: the same formulas, the Lyapunov equation by its
+    Kronecker system as scipy's ``direct`` method.
 
     The result is the same fixed point to round-off (1e-15 relative, not the same bits: no
-    BLAS/LAPACK kernel). ``design_controller(..., fast=True)`` uses it, for app. H's
-    spectral radii (:func:`.robustness.spectral_radius`); the exact tables keep
+    LAPACK kernel). ``design_controller(..., fast=True)`` uses it, for app. H's spectral
+    radii (:func:`.robustness.spectral_radius`); the exact tables keep
     :func:`riccati_iterate`, whose bits they were built with.
     """
     a, b, qx = (np.ascontiguousarray(x, dtype=float) for x in (a, b, qx))
