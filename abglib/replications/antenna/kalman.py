@@ -75,11 +75,15 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000, fast=False):
         Stop when every entry changes by less than ``tol`` relative to
         ``sqrt(Q_ii Q_jj)``.
     fast : bool
-        Iterate on compiled small-matrix loops (:mod:`._smallmat`, about 4x faster) instead
-        of numba's BLAS/LAPACK calls: the same iteration, round-off apart (1e-15 relative in
-        one step; where it stops can move by a step, 1e-11 relative in Q). Used where that
-        round-off is below what is written (app. H's spectral radii, the phase ensemble's
-        32-bit filters); the default keeps the BLAS route the exact tables were built with.
+        Iterate on the states the noise reaches alone (below): the same iteration on
+        smaller matrices, round-off apart (1e-15 relative in one step; where it stops can
+        move by a step, 1e-11 relative in Q). Used where that round-off is below what is
+        written (app. H's spectral radii, the phase ensemble's 32-bit filters).
+
+    Both routes iterate on compiled small-matrix loops (:mod:`._smallmat`, no BLAS: the
+    same bits on every CPU). Until v0.4.3 the default iterated on numba's BLAS/LAPACK
+    (``@`` and ``np.linalg.solve``: some 5 s of compilation on a cold cache); the
+    antenna's 11 default tables are byte-identical either way.
     """
     vv = np.atleast_2d(np.asarray(vv, dtype=float))
     if not _symmetric(vv) or np.linalg.eigvalsh(vv).min() <= 0.0:
@@ -92,7 +96,7 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000, fast=False):
     # read-only whatever the caller passed: one compiled signature (abglib._kernels.read_only)
     vv = read_only(np.ascontiguousarray(vv))
     if not fast:
-        qn, ok = _kalman_iterate_blas(a, m, np.ascontiguousarray(vw), vv, float(tol), int(max_iter))
+        qn, ok = _kalman_iterate(a, m, np.ascontiguousarray(vw), vv, float(tol), int(max_iter))
         if not ok:
             raise AbglibValueError(
                 f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}"
@@ -120,23 +124,6 @@ def kalman_riccati(a, m, vw, vv, tol=1e-12, max_iter=1_000_000, fast=False):
     if not ok:
         raise AbglibValueError(f"Kalman Riccati iteration (eq 7.15) did not converge in {max_iter}")
     return qn
-
-
-@njit(cache=True)
-def _kalman_iterate_blas(a, m, vw, vv, tol, max_iter):
-    # the iteration of kalman_riccati, compiled (the same formulas, step by step)
-    q = vw.copy()
-    mt = np.ascontiguousarray(m.T)
-    at = np.ascontiguousarray(a.T)
-    for _ in range(max_iter):
-        s = m @ q @ mt + vv
-        qn = vw + a @ (q - q @ mt @ np.linalg.solve(s, m @ q)) @ at
-        qn = 0.5 * (qn + qn.T)
-        d = np.sqrt(np.maximum(np.diag(qn), 1e-300))
-        if np.max(np.abs(qn - q) / np.outer(d, d)) < tol:
-            return qn, True
-        q = qn
-    return q, False
 
 
 @njit(cache=True)

@@ -31,7 +31,7 @@ def spectral_radius(nominal: AntennaParams, name, factor, dt, q, r, order, v_w, 
     """Spectral radius of the closed loop with design parameter ``name`` scaled by ``factor``.
 
     The designs use the compiled Riccati solvers (:func:`.lq.riccati_solve`,
-    :func:`.kalman.kalman_riccati` ``fast=True``; 3x faster than the BLAS iterations). A
+    :func:`.kalman.kalman_riccati` ``fast=True``; faster than the exact routes). A
     stable design's radius is the marginal mode's 1 computed to ~1e-8 by either route, so
     it holds :data:`RADIUS_DIGITS` digits.
     """
