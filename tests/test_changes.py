@@ -90,10 +90,47 @@ def test_every_kind_of_change_is_found(two):
     # Fig 3's quantity was reworded: paired by item and printed value, nothing changed
     assert "Fig 3" not in rows
     assert ch.counts().to_dict("records") == [
-        {"doc": "d", "verdict": 4, "moved": 1, "added": 1, "removed": 1, "total": 7}
+        {"doc": "d", "verdict": 4, "moved": 1, "note": 0, "added": 1, "removed": 1, "total": 7}
     ]
     assert ch.remarks["d"][0] == "columns new in v0.2.0: depends_on, robust"
     assert "1 rows paired although their text changed" in ch.remarks["d"][1]
+
+
+def test_a_note_that_changed_under_the_same_verdict_and_value(tmp_path):
+    head = "doc,item,quantity,published,reproduced,tolerance,verdict,note,robust\n"
+    old = _version(
+        tmp_path / "a",
+        {
+            "d": head
+            + "d,x,q,10,10.1,0.5,match,mismatch at 4 of 7 points,false\n"
+            + "d,y,q,20,20.1,0.5,match,same,true\n"
+            + "d,z,q,30,30.1,0.5,match,same,true\n"
+            + "d,w,q,40,40.1,0.5,match,same,true\n"
+        },
+    )
+    new = _version(
+        tmp_path / "b",
+        {
+            "d": head
+            + "d,x,q,10,10.1,0.5,match,mismatch at 2 of 7 points,false\n"
+            + "d,y,q,20,20.1,0.5,match,same,false\n"
+            + "d,z,q,30,30.2,0.5,match,same,true\n"  # within its tolerance: no change
+            + "d,w,quantity reworded,40,40.1,0.5,match,same,true\n"  # paired alone
+        },
+    )
+    ch = diff_folders(old, new)
+    rows = _by_item(ch)
+    assert sorted(rows) == ["x", "y"]
+    assert rows["x"]["change"] == "note"
+    assert rows["x"]["note"] == "now: mismatch at 2 of 7 points; was: mismatch at 4 of 7 points"
+    assert (rows["x"]["old_verdict"], rows["x"]["new_verdict"]) == ("match", "match")
+    assert rows["y"]["change"] == "note" and rows["y"]["note"] == "robust: true → false"
+    assert ch.counts().to_dict("records") == [
+        {"doc": "d", "verdict": 0, "moved": 0, "note": 2, "added": 0, "removed": 0, "total": 2}
+    ]
+    write_changes(ch, tmp_path / "changes.csv", tmp_path / "changes.html", {})
+    page = (tmp_path / "changes.html").read_text(encoding="utf-8")
+    assert "same verdict and value, note changed" in page and "mismatch at 2 of 7" in page
 
 
 def test_a_value_moved_beyond_its_tolerance_with_the_same_verdict(tmp_path):

@@ -15,6 +15,12 @@ paired with at most one row of the newer one (:func:`match_rows`); then
     tolerance (the ``tolerance`` column: half a unit in the last printed digit unless the
     config overrides it), or whose qualitative outcome changed, or that gained or lost a
     value. A qualitative row (empty ``published``) has no tolerance: any change counts.
+``note``
+    a paired row with the same verdict and value whose note changed, or its
+    ``depends_on``, ``robust``, ``reading``, ``chance`` or printed value (the note gives
+    the newer row's note, then the older one's, then the other columns that changed).
+    What a reader of a note would otherwise miss: a verdict that holds at fewer of the
+    plausible inputs than before, a trend found from another omega, a reading's chance.
 
 ``changes.csv`` has one row per change, columns :data:`CHANGES_COLUMNS`:
 
@@ -27,7 +33,8 @@ published  the number as printed (the newer row's, for a pair)
 old_verdict, new_verdict   empty on the side that has no row
 old_value, new_value       the reproduced values as written in the two tables
 tolerance  the tolerance the move was judged against (empty for a qualitative row)
-note       why: the newer row's note for a verdict change, the move in tolerances, ...
+note       why: the newer row's note for a verdict change, the move in tolerances, the
+           two notes for a ``note`` change, ...
 ========== ==============================================================================
 
 Columns that only one version has (``depends_on`` and ``robust`` came with v0.3.0,
@@ -81,7 +88,7 @@ CHANGES_COLUMNS = [
     "note",
 ]
 #: Kinds of change, in the order the page lists them.
-CHANGE_KINDS = ["verdict", "moved", "added", "removed"]
+CHANGE_KINDS = ["verdict", "moved", "note", "added", "removed"]
 
 # the pairing passes, most specific first: (columns, name used in the note). A `key`
 # column, where both tables have one, comes before all of them.
@@ -283,6 +290,12 @@ def diff_tables(
             elif moved:
                 kind = "moved"
                 note = "; ".join([how_moved, *extra])
+            elif _norm(o.get("note", "")) != _norm(n.get("note", "")) or _extra(o, n):
+                # the same verdict and value; a pairing alone (reworded text) is no change
+                kind = "note"
+                was, now = _norm(o.get("note", "")), _norm(n.get("note", ""))
+                texts = [f"now: {now or '(empty)'}", f"was: {was or '(empty)'}"]
+                note = "; ".join((texts if was != now else []) + extra)
             else:
                 continue
             records.append(_record(doc, kind, o, n, tol, note))
@@ -372,9 +385,11 @@ td.note { overflow-wrap: anywhere; } td.item { min-width: 12em; }
 .wrap { overflow-x: auto; }
 .k-verdict { background: #fde2b8; } .k-moved { background: #fff4c2; }
 .k-added { background: #d9f2d9; } .k-removed { background: #f6d2d2; }
-tr.k-verdict, tr.k-moved, tr.k-added, tr.k-removed { background: none; }
+.k-note { background: #dde8f6; }
+tr.k-verdict, tr.k-moved, tr.k-note, tr.k-added, tr.k-removed { background: none; }
 tr.k-verdict > td:first-child { border-left: .5em solid #e8a33d; }
 tr.k-moved > td:first-child { border-left: .5em solid #e6c84a; }
+tr.k-note > td:first-child { border-left: .5em solid #7a9cc6; }
 tr.k-added > td:first-child { border-left: .5em solid #6cbf6c; }
 tr.k-removed > td:first-child { border-left: .5em solid #d46a6a; }
 caption, summary { text-align: left; font-weight: bold; padding: .3em 0; }
@@ -384,6 +399,7 @@ summary { cursor: pointer; margin-top: .6em; padding-left: .3em; border-radius: 
 _KIND_TEXT = {
     "verdict": "verdict changed",
     "moved": "value moved beyond its tolerance",
+    "note": "same verdict and value, note changed",
     "added": "row added",
     "removed": "row removed",
 }
@@ -431,9 +447,11 @@ def changes_html(ch: Changes, links: Mapping[str, str] | None = None) -> str:
         )
     intro = (
         f"<p>Every row of each document's <code>comparison.csv</code> in {esc(ch.new)} "
-        f"paired with its row in {esc(ch.old)}: rows added or removed, verdicts changed, and "
+        f"paired with its row in {esc(ch.old)}: rows added or removed, verdicts changed, "
         "reproduced values that moved by more than their tolerance (half a unit in the last "
-        "printed digit unless the report states another). Machine-readable: "
+        "printed digit unless the report states another), and rows whose verdict and value "
+        "stayed but whose note (or robustness, reading, printed value) changed. "
+        "Machine-readable: "
         '<a href="changes.csv">changes.csv</a>.</p>'
     )
     summary = (
