@@ -262,9 +262,9 @@ def test_difference_to_known_grows(s):
 def test_a_step_down_within_the_roundoff_is_no_decrease():
     assert cx.non_decreasing([1.0, 2.0, 3.0]) and cx.non_decreasing([1.0, 1.0])
     assert not cx.non_decreasing([1.0, 2.0, 2.0 - 1e-15, 3.0])
-    assert cx.non_decreasing([1.0, 2.0, 2.0 - 1e-15, 3.0], roundoff=1e-10)
-    assert not cx.non_decreasing([1.0, 2.0, 2.0 - 2e-10, 3.0], roundoff=1e-10)
-    assert cx.non_decreasing([0.0, 5e-15, 2e-15, 3e-14], roundoff=cx.E_ROUNDOFF)
+    assert cx.non_decreasing([1.0, 2.0, 2.0 - 1e-15, 3.0], tol=1e-10)
+    assert not cx.non_decreasing([1.0, 2.0, 2.0 - 2e-10, 3.0], tol=1e-10)
+    assert cx.non_decreasing([0.0, 5e-15, 2e-15, 3e-14], tol=cx.E_RESOLVED)
 
 
 def roundoff_sweep(noise: float, seed: int = 20261203):
@@ -298,10 +298,10 @@ def roundoff_sweep(noise: float, seed: int = 20261203):
     )
 
 
-@pytest.mark.parametrize("noise", [0.0, 1e-14, 1e-12])
+@pytest.mark.parametrize("noise", [0.0, 1e-14, 2e-14])
 def test_the_omega_trends_do_not_hang_on_roundoff(noise):
     """Figs I.8-I.9's trend and order claims judge e_max to its round-off: moved by e's
-    round-off (and by 100 times it), every verdict is the one of the exact sweep. Judged
+    round-off (and by twice it), every verdict is the one of the exact sweep. Judged
     strictly, round-off at omega = 0.01 made a higher order "worse" there and
     |e_predicted - e_known| "decrease" (v0.4.2: 2 robustness rows and 2 notes)."""
     for seed in range(20 if noise else 1):
@@ -314,17 +314,21 @@ def test_the_omega_trends_do_not_hang_on_roundoff(noise):
         assert not cx.higher_order_worse(cx.order_pivot(s)).any(), seed
 
 
-def test_a_higher_order_worse_beyond_roundoff_is_seen():
+@pytest.mark.parametrize("excess", [5e-13, 1e-3])  # 50 times e's error, and large
+def test_a_higher_order_worse_beyond_roundoff_is_seen(excess):
+    """An excess of order 5 over order 4 beyond the round-off is seen, at low omega too:
+    a tolerance at e's write bound (1e-10) hid the antenna's real ~omega^6 excess below
+    omega = 0.056 (study_exact.E_ROUNDOFF is not e's error)."""
     s = roundoff_sweep(0.0)
     sw = s.omega_sweep
-    at = (sw["omega"] == sw["omega"].max()) & (sw["case"] == "order 5")
-    sw.loc[at, "e_max"] = (
-        sw.loc[(sw["omega"] == sw["omega"].max()) & (sw["case"] == "order 4"), "e_max"].to_numpy()
-        + 2 * cx.E_ROUNDOFF
-    )
+    w = np.sort(sw["omega"].unique())[1]
+    for qr in (s.q, s.q_high):
+        row = (sw["omega"] == w) & (sw["q_over_r"] == qr)
+        four = sw.loc[row & (sw["case"] == "order 4"), "e_max"].to_numpy()
+        sw.loc[row & (sw["case"] == "order 5"), "e_max"] = four + excess
     assert cx._notalways(s).value is True
-    assert "1 and up" in cx._notalways(s).note
-    assert cx._better(s).value is False
+    assert cx._notalways(s).note.endswith(f"{w:.3g} and up")
+    assert cx._better(s).value is False and f"{w:.3g}" in cx._better(s).note
 
 
 @claim_test(DOC, "ch6.linear_in_amplitude")

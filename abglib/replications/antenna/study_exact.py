@@ -190,8 +190,12 @@ def omega_sweep_table(controllers, r: float, sw) -> pd.DataFrame:
     return df
 
 
-#: Absolute round-off of the steady-state error amplitude e (see :func:`omega_sweep_table`).
+#: Bound below which the steady-state error amplitude e is written as round-off
+#: (``<1e-10``): above it e holds 4 digits (see :func:`omega_sweep_table`).
 E_ROUNDOFF = 1e-10
+#: Absolute error of e itself: about 1e-14 (the default OpenBLAS kernel vs
+#: ``OPENBLAS_CORETYPE=Prescott``: 9e-15 at e = 1.2e-8).
+E_ABS_ERROR = 1e-14
 #: Significant digits the phase of e holds (its error is about 1e-14 / e_max rad, < 1e-4).
 PHASE_DIGITS = 4
 #: Significant digits the amplitude of u holds (absolute round-off ~1e-13 at ~1e-3).
