@@ -627,6 +627,23 @@ def test_claim_eq24_n2_is_eq9_10(study):
     assert CLAIMS.compute(study, "claim.eq24_n2_is_eq9_10").value is True
 
 
+def test_claim_eq24_n2_note_survives_perturbed_arithmetic(monkeypatch):
+    """The two starts agree to round-off, ~1e-12 m: written as the bound 1e-12, the note
+    moved under abglib precision's perturbation (1.25-1.93e-12 m at some seed sets), and
+    a note that moves makes the row rest on chance. Its bound is the claim's 1e-9 m."""
+    from abglib.verdicts.robustness import with_seeds_shifted
+
+    key = "claim.eq24_n2_is_eq9_10"
+    for shift in range(4):
+        s = study_for(DOC, with_seeds_shifted(small_config(), DOC, shift), extra=("datasets",))
+        monkeypatch.delenv("ABGLIB_PERTURB", raising=False)
+        plain = CLAIMS.compute(s, key).note
+        assert plain.endswith("to < 1e-09 m"), plain
+        for k in (1, 2, 3):
+            monkeypatch.setenv("ABGLIB_PERTURB", str(k))
+            assert CLAIMS.compute(s, key).note == plain, (shift, k)
+
+
 @claim_test(DOC, "claim.eq16_17")
 def test_claim_eq16_17(study):
     # independent route: eigenvalues of the homogeneous recursion of eqs 3, 6, 8 (T = 1) in

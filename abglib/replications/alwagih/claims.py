@@ -573,6 +573,11 @@ def _eq23b_bb(s):
     )
 
 
+#: How closely the zero-state and two-point starts of eq 24 must agree (m, measurements of
+#: ~100 m): far above their round-off (~1e-12 m), far below any error of the recursion.
+EQ24_AGREE = 1e-9
+
+
 @CLAIMS.claim("claim.eq24_n2_is_eq9_10")
 def _eq24_n2(s):
     """Eq 24 at n = 2 (the paper states it for n > 2) against the start of eqs 9-10."""
@@ -598,12 +603,16 @@ def _eq24_n2(s):
             np.max(np.abs(zero.x_pred[:, 2:] - two.x_pred[:, 2:])),
         ]
     err = float(max(errs))
+    # the two routes agree to round-off, ~1e-12 m on measurements of ~100 m: the note
+    # writes it as the claim's own bound (1e-12 itself was crossed under abglib precision's
+    # perturbation, 1.28e-12 m, and a note that moves makes the row rest on chance)
     return Result(
         bool(math.isclose(a2, 1.0, rel_tol=1e-12) and math.isclose(b2, 1.0, rel_tol=1e-12))
-        and err < 1e-9,
+        and err < EQ24_AGREE,
         f"eq 24 at n = 2: alpha = {a2:g}, beta = {b2:g}; run from a zero state (T = 1 and 0.5 s, "
         f"8 random series) it leaves v_s(2) = (x_m(2) - x_m(1))/T and x_p(3) = x_m(2) + T v_s(2) "
-        f"of eqs 9-10 and the same later predictions as the two-point start, to {roundoff(err)} m",
+        f"of eqs 9-10 and the same later predictions as the two-point start, to "
+        f"{roundoff(err, bound=EQ24_AGREE)} m",
     )
 
 
