@@ -243,8 +243,8 @@ def order_pivot(s, qr=None, key="e_max"):
 
 def higher_order_worse(piv) -> np.ndarray:
     """Per omega of :func:`order_pivot`: does some higher order give a larger e_max, by
-    more than :data:`E_RESOLVED` (a smaller excess is round-off: at low omega orders 4-5
-    are within ~1e-15 of each other)?"""
+    more than :data:`E_RESOLVED`? A smaller excess cannot be told from e's round-off
+    (order 5's excess over order 4 at omega = 0.01, 5.8e-15)."""
     return np.any(np.diff(piv.to_numpy(), axis=1) > E_RESOLVED, axis=1)
 
 
