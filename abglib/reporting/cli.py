@@ -16,7 +16,8 @@
     What changed between two version folders (e.g. ``reports/v0.2.0`` and
     ``reports/v0.3.0``, or a build's ``results/reports/v<version>``), per document: rows
     added or removed, verdicts changed, reproduced values moved beyond their tolerance,
-    notes changed under the same verdict and value. Prints the counts; writes ``changes.csv`` and ``changes.html`` to ``--out``.
+    notes changed under the same verdict and value. Prints the counts; writes
+    ``changes.csv`` and ``changes.html`` to ``--out``.
 ``abglib precision``
     Derive the digits every table column is reproducible to, by building the tables plain
     and under several perturbations of the arithmetic (:mod:`abglib.reporting.precision`),
