@@ -12,6 +12,7 @@ scenario one cell; and the benchmark's, the index's and the scorecard's jobs onc
 
 from __future__ import annotations
 
+import os
 import re
 import subprocess
 import sys
@@ -38,6 +39,10 @@ REPORT_RULE = {"steelman1978": "steelman_report"}
 # documents whose figures are drawn per figure (steelman_frequency_response and
 # steelman_figure, wildcard fig) instead of by one <doc>_figures job
 PER_FIGURE = {"steelman1978"}
+#: What the workflow's parse must not import: the scientific stack beyond numpy and the
+#: root finders of scipy.optimize (which a variant's design rule may need, to solve for
+#: its gains: Huang's ENBW rule of the default config).
+HEAVY = ("pandas", "matplotlib", "numba", "scipy.integrate", "scipy.signal", "scipy.stats")
 BENCHMARK_JOBS = (
     "benchmark_league",
     "benchmark_tradeoff",
@@ -98,23 +103,44 @@ def expected_jobs(config: dict) -> Counter:
     return jobs
 
 
+#: What Python's ``-X importtime`` writes for each module: ``import time: self | cumulative
+#: | name`` (the name indented by its depth).
+IMPORT_TIME = re.compile(r"import time:\s+\d+ \|\s+\d+ \|\s*(\S+)\s*$")
+
+
 @pytest.fixture(scope="module", params=sorted(CONFIGS))
 def dry_run(request, tmp_path_factory):
-    """(config, jobs) of a clean build's dry run in an empty working directory."""
+    """(config, jobs, imported) of a clean build's dry run in an empty working directory:
+    ``imported`` names every module that run imported (``PYTHONPROFILEIMPORTTIME``)."""
     name = request.param
     work = tmp_path_factory.mktemp(f"jobs-{name}")
     exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
     cmd = [exe, "-s", str(REPO / "Snakefile"), "-d", str(work), "--configfile", str(CONFIGS[name])]
+    env = {**os.environ, "PYTHONPROFILEIMPORTTIME": "1"}
     out = subprocess.run(
-        [*cmd, "-n", "--forceall"], capture_output=True, text=True, cwd=REPO, timeout=300
+        [*cmd, "-n", "--forceall"], capture_output=True, text=True, cwd=REPO, timeout=300, env=env
     )
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
     config = yaml.safe_load(CONFIGS[name].read_text(encoding="utf-8"))
-    return config, parse_jobs(out.stdout)
+    imported = {m.group(1) for m in map(IMPORT_TIME.match, out.stderr.splitlines()) if m}
+    assert "snakemake" in imported, "no import was recorded: " + out.stderr[-1000:]
+    return config, parse_jobs(out.stdout), imported
+
+
+def test_a_new_working_directorys_parse_imports_no_numerics(dry_run):
+    """Snakemake's parse of the workflow in a new working directory, the benchmark
+    matrix's checks included (common.smk's ``_check_matrix``, which runs whenever the
+    matrix or its code changed), imports none of the scientific stack beyond numpy
+    (:data:`HEAVY`): the jobs import it in their workers. Counting the matrix's VRF checks
+    through abglib.bench.benchmark once imported scipy and pandas here (the small
+    config's dry run 2.3 → 1.3 CPU-s)."""
+    _, _, imported = dry_run
+    heavy = sorted(m for m in imported if m.startswith(HEAVY))
+    assert not heavy, f"the parse imported {heavy[:8]}"
 
 
 def test_the_dry_run_schedules_exactly_the_configured_jobs(dry_run):
-    config, jobs = dry_run
+    config, jobs, _ = dry_run
     listed = Counter((j["rule"], tuple(sorted(j["wildcards"].items()))) for j in jobs)
     expected = expected_jobs(config)
     assert listed == expected, (
@@ -126,7 +152,7 @@ def test_the_dry_run_schedules_exactly_the_configured_jobs(dry_run):
 def test_a_plain_build_writes_nothing_under_the_committed_releases(dry_run):
     """A plain build's every output lies outside the committed releases (``reports/``,
     written only by ``abglib release``); its reports go to ``results/reports/v<version>``."""
-    _, jobs = dry_run
+    _, jobs, _ = dry_run
     written = [f for j in jobs for f in j["output"]]
     assert written, "the dry run listed no outputs"
     assert not [f for f in written if f.startswith("reports/")], written[:5]
@@ -136,7 +162,7 @@ def test_a_plain_build_writes_nothing_under_the_committed_releases(dry_run):
 def test_each_job_writes_its_own_outputs_where_the_contracts_say(dry_run):
     import abglib
 
-    config, jobs = dry_run
+    config, jobs, _ = dry_run
     reports = f"results/reports/v{abglib.__version__}"
     outputs = [f for j in jobs for f in j["output"]]
     assert len(outputs) == len(set(outputs)), "an output is written by two jobs"

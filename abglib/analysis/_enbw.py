@@ -22,7 +22,6 @@ and eqs 8-13 reconstructed from the garbled scan) live with their document, in
 from __future__ import annotations
 
 import numpy as np
-import scipy.integrate
 
 from .._checks import AbglibValueError, scalar_or_array
 from ..engine import track
@@ -85,6 +84,7 @@ def _hp(alpha: float, beta: float, gamma: float, wT: np.ndarray) -> np.ndarray:
 
 def _integral_one(alpha: float, beta: float, gamma: float) -> float:
     """``(1/pi) int_0^pi |H|^2 d(wT)`` (= sum h_k^2) by adaptive quadrature."""
+    import scipy.integrate  # here, as _kalman does: the design rules' callers need no scipy
 
     def f(x):
         return float(np.abs(_hp(alpha, beta, gamma, np.asarray(x))) ** 2)

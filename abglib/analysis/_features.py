@@ -22,7 +22,6 @@ from fractions import Fraction
 import numpy as np
 from numpy.polynomial import Polynomial
 from numpy.polynomial import polynomial as P
-from scipy.optimize import brentq, minimize_scalar
 
 from .._checks import AbglibValueError, check_finite, check_in_range, describe, scalar_or_array
 from ..gains import Gains, require_gains
@@ -150,6 +149,8 @@ def _peak_scalar(gains: Gains, output: str, method: str):
         i = int(top[np.argmin(w[top])])
         return float(w[i]), float(np.sqrt(m2[i]) - 1.0)
 
+    from scipy.optimize import minimize_scalar  # here: the exact route needs no scipy
+
     def neg_mag2(w):
         return -(abs(frequency_response(gains, output, w)) ** 2)
 
@@ -193,6 +194,8 @@ def _omega_at_gain_scalar(gains: Gains, level: float, output: str, method: str):
         w = _omega_of_q(_real_roots_q(_rounded(excess)))
         w = w[w > w_pk * (1 + 1e-9) + 1e-12]
         return (float(w.min()) if w.size else float("nan"),)
+
+    from scipy.optimize import brentq  # here: the exact route needs no scipy
 
     def excess(x):
         return abs(frequency_response(gains, output, x)) ** 2 - level**2

@@ -20,6 +20,7 @@ import numpy as np
 from .._checks import AbglibValueError
 from ..gains import Gains
 from . import metrics, variants
+from ._family import n_vrf_checks
 
 if TYPE_CHECKING:  # pandas is imported where it is used: the workflow's parse needs none
     import pandas as pd
@@ -58,11 +59,6 @@ LEAGUE_COLUMNS = (
     "vrf_check",
     "vrf_worst_t",
 )
-
-
-def n_vrf_checks(n_variants: int, n_scenarios: int, max_coords: int = 2) -> int:
-    """Upper bound on the number of VRF checks in the matrix (for the Bonferroni bound)."""
-    return int(n_variants) * int(n_scenarios) * int(max_coords) * len(metrics.OUTPUTS)
 
 
 def _gain_summary(g) -> dict:

@@ -45,6 +45,7 @@ from ..analysis._statespace import state_space
 from ..engine import OUTPUTS as TRACK_OUTPUTS
 from ..engine import track
 from ..gains import Gains, require_gains
+from . import _family
 
 __all__ = [
     "OUTPUTS",
@@ -59,8 +60,9 @@ __all__ = [
     "vrf_failures",
 ]
 
-#: Estimates scored against the truth.
-OUTPUTS = ("x_smooth", "x_pred", "v_smooth", "v_pred")
+#: Estimates scored against the truth (defined in :mod:`._family`, which the workflow's
+#: parse imports without this module's numerics).
+OUTPUTS = _family.OUTPUTS
 # the tracker outputs (abglib.track) each scored estimate is made of (v_pred: eq 2's
 # prediction from the smoothed velocity and acceleration, as _estimates computes it)
 _MADE_OF = {

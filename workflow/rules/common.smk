@@ -332,8 +332,9 @@ def bench_mem_mb(wildcards):
 
 
 def _check_family_size():
-    """The Bonferroni bound assumes at most family_size VRF checks in the matrix."""
-    from abglib.bench.benchmark import n_vrf_checks
+    """The Bonferroni bound assumes at most family_size VRF checks in the matrix (the
+    count imports no numerics: abglib.bench._family)."""
+    from abglib.bench._family import n_vrf_checks
 
     n = n_vrf_checks(len(BENCH_VARIANTS), len(BENCH_SCENARIOS))
     if n > int(BENCH["family_size"]):
