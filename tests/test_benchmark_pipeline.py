@@ -1,9 +1,11 @@
-"""Adding a tracker variant is one config entry: Snakemake schedules exactly its new cells
-(plus the aggregations that read them), and the league table includes it after a run."""
+"""Adding a tracker variant is one config entry, of a built-in rule or of a user's own
+tracker in a file of their own: Snakemake schedules exactly its new cells (plus the
+aggregations that read them), and the league table includes it after a run."""
 
 import subprocess
 import sys
 from pathlib import Path
+from types import SimpleNamespace
 
 import pandas as pd
 import pytest
@@ -17,6 +19,7 @@ REPO = Path(__file__).resolve().parents[1]
 SMALL = REPO / "tests" / "data" / "config_small.yaml"
 SNAKEMAKE = Path(sys.executable).parent / "snakemake"
 LEAGUE = "results/benchmark/league.csv"
+TRADEOFF = "results/benchmark/tradeoff.csv"
 
 
 def _snakemake(workdir: Path, *args: str) -> subprocess.CompletedProcess:
@@ -38,42 +41,119 @@ def _scheduled(stdout: str) -> dict:
     return jobs
 
 
-@pytest.mark.xdist_group(SMALL_BUILD)
-def test_new_variant_schedules_only_its_cells(tmp_path, small_build):
-    # the session's small build (its league included), copied: the dry run below schedules
-    # only the new cells and the league, so nothing of the copy reruns (the original's
+#: A user's own trackers, in a file of their own outside the repository
+#: (abglib.bench.variants, "A user's own tracker").
+USER_TRACKERS = '''
+import numpy as np
+from abglib import Gains
+
+
+def my_gains(dt, n_samples, alpha):
+    """A fixed-gain alpha-beta tracker of the user's own design."""
+    return Gains(alpha, alpha**2 / (2.0 - alpha))
+
+
+def my_tracker(dt, n_samples, window):
+    """A moving average of the last ``window`` measurements (no velocity estimate)."""
+
+    def run(z):
+        c = np.cumsum(np.pad(z, ((0, 0), (window, 0))), axis=1)
+        x = (c[:, window:] - c[:, :-window]) / window
+        return {"x_smooth": x, "x_pred": np.concatenate([z[:, :1], x[:, :-1]], axis=1)}
+
+    return run
+'''
+#: The variants the tests add: one config entry of a built-in rule, two of the user's file.
+NEW_VARIANTS = ("extra_bb", "mine_ab", "mine_ma")
+
+
+@pytest.fixture(scope="module")
+def extended(tmp_path_factory, small_build):
+    """The session's small build, copied and extended by three variants (one config entry
+    of a built-in rule, and the user's two trackers of :data:`USER_TRACKERS`): the dry run
+    of its league before, and the league and trade-off built after. One build serves both
+    stories below (each one of its own cost a build and a dry run, ~10 CPU-s)."""
+    root = tmp_path_factory.mktemp("extended")
+    work = copy_build(small_build, root / "build")
+    assert (work / LEAGUE).is_file()
+    code = root / "elsewhere" / "my_trackers.py"
+    code.parent.mkdir()
+    code.write_text(USER_TRACKERS, encoding="utf-8")
+    extra = root / "extra.yaml"
+    extra.write_text(
+        "benchmark:\n  variants:\n"
+        "    extra_bb: {rule: benedict_bordner, alpha: 0.4}\n"
+        f"    mine_ab: {{callable: '{code}:my_gains', alpha: 0.4}}\n"
+        f"    mine_ma: {{callable: '{code}:my_tracker', window: 4, family: moving average}}\n",
+        encoding="utf-8",
+    )
+    # nothing of the copy reruns: only the new cells and what reads them (the original's
     # no-op rerun: tests/test_pipeline.py::test_second_run_schedules_nothing)
-    copy_build(small_build, tmp_path / "build")
-    tmp_path = tmp_path / "build"
-    assert (tmp_path / LEAGUE).is_file()
+    dry = _snakemake(work, str(SMALL), str(extra), "-n", LEAGUE)
+    assert dry.returncode == 0, dry.stdout[-3000:] + dry.stderr[-3000:]
+    run = _snakemake(work, str(SMALL), str(extra), "-c2", LEAGUE, TRADEOFF)
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    return SimpleNamespace(work=work, code=code, extra=extra, dry=dry.stdout)
+
+
+def _bad_entry(work: Path, entry: str) -> str:
+    """What a dry run says of a config whose one variant is ``entry`` (it must fail)."""
+    bad = work.parent / "bad.yaml"
+    bad.write_text(f"benchmark:\n  variants:\n    typo: {entry}\n", encoding="utf-8")
+    out = _snakemake(work, str(SMALL), str(bad), "-n", LEAGUE)
+    assert out.returncode != 0, out.stdout[-2000:]
+    return out.stdout + out.stderr
+
+
+@pytest.mark.xdist_group(SMALL_BUILD)
+def test_new_variant_schedules_only_its_cells(extended):
+    jobs = _scheduled(extended.dry)
+    assert set(jobs) == {"benchmark_cell", "benchmark_league"}, jobs
     small = yaml.safe_load(SMALL.read_text(encoding="utf-8"))
     scenarios = small["benchmark"]["scenarios"]
-    extra = tmp_path / "extra.yaml"
-    extra.write_text(
-        "benchmark:\n  variants:\n    extra_bb: {rule: benedict_bordner, alpha: 0.4}\n",
-        encoding="utf-8",
-    )
-    dry = _snakemake(tmp_path, str(SMALL), str(extra), "-n", LEAGUE)
-    assert dry.returncode == 0, dry.stdout[-3000:] + dry.stderr[-3000:]
-    jobs = _scheduled(dry.stdout)
-    assert set(jobs) == {"benchmark_cell", "benchmark_league"}, jobs
     assert sorted(jobs["benchmark_cell"]) == sorted(
-        f"results/benchmark/cells/extra_bb/{s}.csv" for s in scenarios
+        f"results/benchmark/cells/{v}/{s}.csv" for v in NEW_VARIANTS for s in scenarios
     )
-    run = _snakemake(tmp_path, str(SMALL), str(extra), "-c2", LEAGUE)
-    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
-    league = pd.read_csv(tmp_path / LEAGUE)
-    assert set(league["variant"]) == {"std_ab_a0.3", "kalata_ab_L1", "extra_bb"}
-    assert (league.groupby("scenario")["rank"].max() == 3).all()
+    league = pd.read_csv(extended.work / LEAGUE)
+    assert set(league["variant"]) == {"std_ab_a0.3", "kalata_ab_L1", *NEW_VARIANTS}
+    assert (league.groupby("scenario")["rank"].max() == 5).all()
+    bb = league[league["variant"] == "extra_bb"].iloc[0]
+    assert bb["rule"] == "benedict_bordner" and bb["alpha"] == 0.4
     # a bad entry fails at parse time, naming the variant and the allowed parameters
-    extra.write_text(
-        "benchmark:\n  variants:\n    typo: {rule: benedict_bordner, alpah: 0.4}\n",
-        encoding="utf-8",
-    )
-    bad = _snakemake(tmp_path, str(SMALL), str(extra), "-n", LEAGUE)
-    assert bad.returncode != 0
-    assert "variant 'typo'" in bad.stderr + bad.stdout
-    assert "allowed: alpha" in bad.stderr + bad.stdout
+    said = _bad_entry(extended.work, "{rule: benedict_bordner, alpah: 0.4}")
+    assert "variant 'typo'" in said and "allowed: alpha" in said
+
+
+@pytest.mark.xdist_group(SMALL_BUILD)
+def test_a_users_own_tracker_runs_in_the_matrix(extended):
+    work, code = extended.work, extended.code
+    table = pd.read_csv(work / LEAGUE)
+    mine = table[table["variant"] == "mine_ab"].iloc[0]
+    assert mine["family"] == "user: my_gains" and mine["alpha"] == 0.4
+    # fixed gains are VRF-checked (60 samples are too few here); the user's tracker is not
+    assert mine["vrf_check"] in ("pass", "n/a (too few samples)")
+    assert set(table[table["variant"] == "mine_ma"]["vrf_check"]) == {"n/a (not fixed-gain)"}
+    ma = table[table["variant"] == "mine_ma"]
+    assert (ma["family"] == "moving average").all() and ma["rmse_x_smooth"].notna().all()
+    variants = pd.read_csv(work / "results/benchmark/variants.csv")
+    assert variants.set_index("variant").loc["mine_ab", "source"] == f"{code}:my_gains"
+    assert (work / TRADEOFF).is_file()
+    # editing the user's file reruns its cells (and only them); a docstring does not
+    try:
+        code.write_text(USER_TRACKERS.replace("A moving average", "A running mean"), "utf-8")
+        dry = _snakemake(work, str(SMALL), str(extended.extra), "-n", LEAGUE)
+        assert _scheduled(dry.stdout) == {}, dry.stdout[-2000:]
+        code.write_text(USER_TRACKERS.replace("2.0 - alpha", "2 - alpha"), encoding="utf-8")
+        dry = _snakemake(work, str(SMALL), str(extended.extra), "-n", LEAGUE)
+        jobs = _scheduled(dry.stdout)
+        assert set(jobs) == {"benchmark_cell", "benchmark_league"}, dry.stdout[-2000:]
+        assert len(jobs["benchmark_cell"]) == 4, jobs
+        assert all("/mine_" in c for c in jobs["benchmark_cell"]), jobs
+    finally:  # the module's build stays as built for the test above
+        code.write_text(USER_TRACKERS, encoding="utf-8")
+    # a name that is not there stops the workflow at parse time, naming the variant
+    said = _bad_entry(work, f"{{callable: '{code}:my_gainz', alpha: 0.4}}")
+    assert "variant 'typo'" in said and "has no function 'my_gainz'" in said
 
 
 def test_regenerated_cell_datasets_are_shared_read_only_and_every_variant_runs_on_them():

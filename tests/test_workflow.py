@@ -1,5 +1,6 @@
-"""The workflow itself: Snakemake's linter finds nothing, parsing it stays light, an edit reruns
-only what it changes, and a user's own tracker runs in the benchmark matrix."""
+"""The workflow itself: Snakemake's linter finds nothing, parsing it stays light, and an edit
+reruns only what it changes (a user's own tracker in the benchmark matrix:
+tests/test_benchmark_pipeline.py)."""
 
 from __future__ import annotations
 
@@ -10,7 +11,6 @@ from pathlib import Path
 import pytest
 
 from ._repo_copy import copy_env, copy_repo
-from .conftest import SMALL_BUILD, copy_build
 
 REPO = Path(__file__).resolve().parents[1]
 SNAKEMAKE = Path(sys.executable).parent / "snakemake"
@@ -121,84 +121,3 @@ def test_an_edit_reruns_only_the_jobs_whose_code_it_changes(tmp_path):
     _edit(variance, "\nimport ", "\n_EDITED = 1\nimport ")
     rerun = dry()
     assert {"benchmark_cell", "steelman1978_study", "steelman1978_claims"} <= rerun
-
-
-USER_TRACKERS = '''
-import numpy as np
-from abglib import Gains
-
-
-def my_gains(dt, n_samples, alpha):
-    """A fixed-gain alpha-beta tracker of the user's own design."""
-    return Gains(alpha, alpha**2 / (2.0 - alpha))
-
-
-def my_tracker(dt, n_samples, window):
-    """A moving average of the last ``window`` measurements (no velocity estimate)."""
-
-    def run(z):
-        c = np.cumsum(np.pad(z, ((0, 0), (window, 0))), axis=1)
-        x = (c[:, window:] - c[:, :-window]) / window
-        return {"x_smooth": x, "x_pred": np.concatenate([z[:, :1], x[:, :-1]], axis=1)}
-
-    return run
-'''
-
-
-@pytest.mark.pipeline
-@pytest.mark.xdist_group(SMALL_BUILD)
-def test_a_users_own_tracker_runs_in_the_matrix(tmp_path, small_build):
-    import pandas as pd
-
-    code = tmp_path / "elsewhere" / "my_trackers.py"
-    code.parent.mkdir()
-    code.write_text(USER_TRACKERS, encoding="utf-8")
-    extra = tmp_path / "extra.yaml"
-    extra.write_text(
-        "benchmark:\n  variants:\n"
-        f"    mine_ab: {{callable: '{code}:my_gains', alpha: 0.4}}\n"
-        f"    mine_ma: {{callable: '{code}:my_tracker', window: 4, family: moving average}}\n",
-        encoding="utf-8",
-    )
-    # the session's small build, copied: only the user's cells and what reads them run
-    work = copy_build(small_build, tmp_path / "work")
-    exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
-    cmd = [exe, "-s", str(REPO / "Snakefile"), "-d", str(work), "--configfile", str(SMALL)]
-    league = "results/benchmark/league.csv"
-    out = subprocess.run(
-        [*cmd, str(extra), "-c2", league, "results/benchmark/tradeoff.csv"],
-        capture_output=True,
-        text=True,
-        timeout=600,
-    )
-    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
-    table = pd.read_csv(work / league)
-    assert set(table["variant"]) == {"std_ab_a0.3", "kalata_ab_L1", "mine_ab", "mine_ma"}
-    assert (table.groupby("scenario")["rank"].max() == 4).all()
-    mine = table[table["variant"] == "mine_ab"].iloc[0]
-    assert mine["family"] == "user: my_gains" and mine["alpha"] == 0.4
-    # fixed gains are VRF-checked (60 samples are too few here); the user's tracker is not
-    assert mine["vrf_check"] in ("pass", "n/a (too few samples)")
-    assert set(table[table["variant"] == "mine_ma"]["vrf_check"]) == {"n/a (not fixed-gain)"}
-    ma = table[table["variant"] == "mine_ma"]
-    assert (ma["family"] == "moving average").all() and ma["rmse_x_smooth"].notna().all()
-    variants = pd.read_csv(work / "results/benchmark/variants.csv")
-    assert variants.set_index("variant").loc["mine_ab", "source"] == f"{code}:my_gains"
-    # editing the user's file reruns its cells (and only them); a docstring does not
-    code.write_text(USER_TRACKERS.replace("A moving average", "A running mean"), encoding="utf-8")
-    dry = subprocess.run([*cmd, str(extra), "-n", league], capture_output=True, text=True)
-    assert _scheduled_rules(dry.stdout) == set(), dry.stdout[-2000:]
-    code.write_text(USER_TRACKERS.replace("2.0 - alpha", "2 - alpha"), encoding="utf-8")
-    dry = subprocess.run([*cmd, str(extra), "-n", league], capture_output=True, text=True)
-    assert _scheduled_rules(dry.stdout) == {"benchmark_cell", "benchmark_league"}
-    cells = [ln for ln in dry.stdout.splitlines() if "output: results/benchmark/cells/" in ln]
-    assert len(cells) == 4 and all("/mine_" in c for c in cells), cells
-    # a name that is not there stops the workflow at parse time, naming the variant
-    extra.write_text(
-        f"benchmark:\n  variants:\n    typo: {{callable: '{code}:my_gainz', alpha: 0.4}}\n",
-        encoding="utf-8",
-    )
-    bad = subprocess.run([*cmd, str(extra), "-n", league], capture_output=True, text=True)
-    assert bad.returncode != 0
-    said = bad.stdout + bad.stderr
-    assert "variant 'typo'" in said and "has no function 'my_gainz'" in said
