@@ -11,7 +11,9 @@ first, every part before a build or an antenna test) and copies them into its ow
 folder (:func:`seed_numba_cache`); a build a test starts inherits its worker's folder.
 Workers keep folders of their own: two workers writing one cache at once on a cold clone
 segfaulted a worker inside a cached gufunc (.ci/run, 2026-12-02). Once compiled, the warm
-cache serves every later session until a source changes.
+cache serves every later session until a source changes; a part starts from an earlier
+warm cache, or else from what a build of the same sources compiled
+(:func:`seed_from_builds`: the README's ``snakemake -c2`` before ``pytest``).
 
 Usage: ``python -m tests._numba_warm <folder>`` builds a warm cache into ``folder``;
 ``python -m tests._numba_warm --part <part>`` compiles one part into ``NUMBA_CACHE_DIR``.
@@ -87,39 +89,77 @@ PARTS = {"engine": engine, "antenna": antenna}
 DAY = 86400.0
 
 
+def _copy_entry(index: Path, out_dir: Path) -> int:
+    """Copy numba's cache entry ``index`` (``<name>.nbi``) with the compiled overloads it
+    numbers (``<name>.<n>.nbc``) into ``out_dir``, replacing ``out_dir``'s entry of that
+    name whole: never mixed with the files of one compiled there (the same numbers can
+    name other signatures there), the overloads first and the index last, each under a
+    temporary name renamed into place, so that a reader never sees an index without its
+    overloads or half a file. Returns how many files were copied."""
+    copied = 0
+    out = out_dir / index.name
+    entry = glob.escape(index.name.removesuffix(".nbi")) + ".*.nbc"
+    out_dir.mkdir(parents=True, exist_ok=True)
+    out.unlink(missing_ok=True)
+    for old in out_dir.glob(entry):
+        old.unlink(missing_ok=True)
+    for src in [*index.parent.glob(entry), index]:
+        tmp = out_dir / f"{src.name}.{os.getpid()}.tmp"
+        try:
+            shutil.copy2(src, tmp)
+            os.replace(tmp, out_dir / src.name)
+        except OSError:  # removed meanwhile: the reader compiles it itself
+            break
+        copied += 1
+    return copied
+
+
+def _newer(index: Path, out_dir: Path) -> bool:
+    """Whether the entry ``index`` is newer than ``out_dir``'s entry of that name (or
+    ``out_dir`` has none)."""
+    out = out_dir / index.name
+    return not out.exists() or out.stat().st_mtime < index.stat().st_mtime
+
+
 def seed_numba_cache(warm: Path, dest: Path, parts=None) -> int:
     """Copy numba's cache entries from the part folders of ``warm`` (a :func:`warm_folder`;
     ``parts``: those named, default every finished part) into ``dest`` where ``dest`` has
-    no such entry or an older one; returns how many files were copied.
+    no such entry or an older one (:func:`_copy_entry`); returns how many files were
+    copied.
 
     numba names a cache folder after the source folder's path, so the copy serves the same
-    sources, and numba checks each source file's stamp when it loads an entry. An entry is
-    a function's index (``<name>.nbi``) and the compiled overloads it numbers
-    (``<name>.<n>.nbc``): it is replaced whole, never mixed with the files of one the worker
-    compiled itself (the same numbers can name other signatures there), the overloads
-    first and the index last, each under a temporary name renamed into place, so that a
-    reader never sees an index without its overloads or half a file.
+    sources, and numba checks each source file's stamp when it loads an entry.
     """
     copied = 0
     names = sorted(PARTS if parts is None else parts)
     for part in (warm / name for name in names if (warm / name).is_dir()):
         for index in part.rglob("*.nbi"):
-            out = dest / index.relative_to(part)
-            if out.exists() and out.stat().st_mtime >= index.stat().st_mtime:
-                continue
-            entry = glob.escape(index.name.removesuffix(".nbi")) + ".*.nbc"
-            out.parent.mkdir(parents=True, exist_ok=True)
-            out.unlink(missing_ok=True)
-            for old in out.parent.glob(entry):
-                old.unlink(missing_ok=True)
-            for src in [*index.parent.glob(entry), index]:
-                tmp = out.parent / f"{src.name}.{os.getpid()}.tmp"
-                try:
-                    shutil.copy2(src, tmp)
-                    os.replace(tmp, out.parent / src.name)
-                except OSError:  # removed meanwhile: the worker compiles it itself
-                    break
-                copied += 1
+            out_dir = dest / index.parent.relative_to(part)
+            if _newer(index, out_dir):
+                copied += _copy_entry(index, out_dir)
+    return copied
+
+
+def seed_from_builds(dest: Path, base: Path = NUMBA_BASE, repo: Path = REPO) -> int:
+    """Copy into ``dest`` (the ``NUMBA_CACHE_DIR`` a warm part compiles into) the entries
+    that builds of these very sources compiled: in ``abglib``'s own ``__pycache__``
+    folders (a build with ``NUMBA_CACHE_DIR`` unset: the README's ``snakemake -c2``) and in
+    ``base``'s folders for them (a build given the tests' cache folder:
+    tools/version-matrix.sh). The newest entry of a name wins, whole (:func:`_copy_entry`);
+    numba checks each entry's source stamp when it loads one, so an edited file's loops
+    are compiled again. Returns how many files were copied; with no build's entry in sight
+    it returns 0 without importing numba (a fresh clone)."""
+    pycache = [p for p in (repo / "abglib").rglob("*.nbi") if p.parent.name == "__pycache__"]
+    if not pycache and not any(base.glob("*/*.nbi")):  # depth 1: a build's, not gw*/warm
+        return 0
+    copied = 0
+    folders = [repo / "abglib", *(d for d in (repo / "abglib").rglob("*") if d.is_dir())]
+    for src_dir in (d for d in folders if d.name != "__pycache__"):
+        sub = _cache_subfolder(src_dir)
+        indexes = [*(src_dir / "__pycache__").glob("*.nbi"), *(base / sub).glob("*.nbi")]
+        for index in sorted(indexes, key=lambda p: p.stat().st_mtime):  # the newest last
+            if _newer(index, dest / sub):
+                copied += _copy_entry(index, dest / sub)
     return copied
 
 
@@ -282,6 +322,8 @@ def build_warm_cache(folder: Path) -> None:
             if done:  # a stamp folder's mtime is when its last part was renamed in
                 newest = max(done, key=lambda d: d.stat().st_mtime)
                 shutil.copytree(newest / part, tmp / part, dirs_exist_ok=True)
+            else:  # none: what a build of these sources compiled (snakemake -c2 first)
+                seed_from_builds(tmp / part, folder.parent.parent)
         for part in todo:
             with open(tmp / f"{part}.err", "w") as err:  # the child keeps its own copy
                 procs[part] = subprocess.Popen(

@@ -31,7 +31,12 @@ CALL = (
 
 
 def _run(src, cache):
-    env = dict(os.environ, NUMBA_CACHE_DIR=str(cache), PYTHONPATH=str(src))
+    """(cache hits, misses) of calling the loop of ``src``'s abglib with ``cache`` as
+    NUMBA_CACHE_DIR (None: numba's default, ``__pycache__`` beside the source)."""
+    env = dict(os.environ, PYTHONPATH=str(src))
+    env.pop("NUMBA_CACHE_DIR", None)
+    if cache is not None:
+        env["NUMBA_CACHE_DIR"] = str(cache)
     out = subprocess.run(
         [sys.executable, "-c", CALL], env=env, capture_output=True, text=True, cwd=src
     )
@@ -64,6 +69,27 @@ def test_a_copy_of_the_sources_loads_the_seeded_loops_instead_of_compiling(tmp_p
     shutil.copytree(repo, edited, ignore=shutil.ignore_patterns("__pycache__"))
     (edited / "abglib" / "loops.py").write_text(MODULE + "\n# edited\n", encoding="utf-8")
     assert _run(edited, warm.seed_copy(edited, repo)["NUMBA_CACHE_DIR"]) == (0, 1)
+
+
+@pytest.mark.slow  # four processes compiling or loading a loop
+def test_a_warm_part_starts_from_what_a_build_compiled(tmp_path):
+    """seed_from_builds finds a build's entries where numba put them, in ``__pycache__``
+    (no NUMBA_CACHE_DIR: the README's build) or in the tests' base folder (the version
+    matrix's build), and the part's cache then loads the loop instead of compiling it."""
+    repo, base = tmp_path / "repo", tmp_path / "base"
+    (repo / "abglib").mkdir(parents=True)
+    (repo / "abglib" / "__init__.py").write_text("", encoding="utf-8")
+    (repo / "abglib" / "loops.py").write_text(MODULE, encoding="utf-8")
+    base.mkdir()
+    assert warm.seed_from_builds(tmp_path / "none", base, repo) == 0  # nothing built yet
+    assert _run(repo, None) == (0, 1)  # a build with numba's default: __pycache__
+    assert len(list((repo / "abglib" / "__pycache__").glob("*.nb[ic]"))) == 2
+    assert warm.seed_from_builds(tmp_path / "part1", base, repo) == 2
+    assert _run(repo, tmp_path / "part1") == (1, 0)
+    shutil.rmtree(repo / "abglib" / "__pycache__")
+    assert _run(repo, base) == (0, 1)  # a build given the tests' base folder
+    assert warm.seed_from_builds(tmp_path / "part2", base, repo) == 2
+    assert _run(repo, tmp_path / "part2") == (1, 0)
 
 
 def test_without_a_cache_folder_the_copy_gets_the_pycache_entries(tmp_path, monkeypatch):
