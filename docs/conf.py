@@ -118,6 +118,11 @@ def api_home(modname: str, name: str) -> str:
     defined = getattr(obj, "__module__", None)
     if not isinstance(defined, str) or not callable(obj):
         return modname  # constants are documented where they are listed
+    # defined in a private module (abglib.bench._family): at home where a documented
+    # module of the same public package lists it
+    public = defined.split("._", 1)[0]
+    if public != defined and modname in API_MODULES and f"{modname}.".startswith(public + "."):
+        return modname
     homes = [m for m in API_MODULES if defined == m or defined.startswith(m + ".")]
     return max(homes, key=len) if homes else modname
 

@@ -6,7 +6,8 @@ ended by a NUL byte (no websocket, no Selenium or Playwright). Every request a p
 passes through ``Fetch`` interception: ``file:`` and ``data:`` URLs go on, anything else is
 recorded and failed, so the page is checked as a reader without network sees it.
 
-:func:`check_page` loads one page and returns a :class:`PageCheck`: failed requests,
+:func:`check_pages` loads pages, several at once in tabs of their own, and returns a
+:class:`PageCheck` each (:func:`check_page`: one page): failed requests,
 network requests, console errors and uncaught exceptions, raw TeX in the visible text,
 ``NaN`` in table cells, broken images, horizontal overflow, the page height, and, when
 asked for, a full-page screenshot. :func:`find_chromium` finds the browser (Debian package
@@ -33,6 +34,7 @@ __all__ = [
     "PageCheck",
     "check_folder",
     "check_page",
+    "check_pages",
     "find_chromium",
     "report_pages",
     "write_summary",
@@ -180,9 +182,11 @@ class Browser:
         session: str | None = None,
         timeout: float | None = None,
     ) -> dict:
-        """Send one command and wait for its reply; events meanwhile go to :attr:`events`."""
+        """Send one command and wait for its reply; events meanwhile go to
+        :meth:`on_event` (which may :meth:`post` commands of its own)."""
         self._id += 1
-        msg = {"id": self._id, "method": method, "params": params or {}}
+        own = self._id  # a command posted meanwhile takes the next ids
+        msg = {"id": own, "method": method, "params": params or {}}
         if session:
             msg["sessionId"] = session
         self._write(msg)
@@ -191,9 +195,9 @@ class Browser:
             reply = self._read(deadline)
             if reply is None:
                 raise BrowserError(f"no reply to {method} within {timeout or self.timeout} s")
-            if "id" in reply and reply["id"] != self._id:
+            if "id" in reply and reply["id"] != own:
                 continue  # the reply to a posted command
-            if reply.get("id") == self._id:
+            if reply.get("id") == own:
                 if "error" in reply:
                     raise BrowserError(f"{method}: {reply['error'].get('message')}")
                 return reply.get("result", {})
@@ -213,11 +217,15 @@ class Browser:
         replaces it to answer intercepted requests as they come."""
         self.events.append(event)
 
-    def pump(self, seconds: float) -> None:
-        """Handle events for ``seconds``."""
+    def pump(self, seconds: float, until=None) -> None:
+        """Handle events for ``seconds``, or until ``until()`` is true after one."""
         deadline = time.monotonic() + seconds
+        if until is not None and until():
+            return
         while (event := self._read(deadline)) is not None:
             self.on_event(event)
+            if until is not None and until():
+                return
 
     def close(self) -> None:
         if self.proc.poll() is None:
@@ -340,24 +348,34 @@ new Promise(resolve => {
 """
 
 
-def check_page(browser: Browser, path, screenshot=None, timeout: float = 60.0) -> PageCheck:
-    """Load the HTML file ``path`` offline and check it (see :class:`PageCheck`).
+#: How long a page's events are still collected after it loaded and settled (s): a late
+#: console error or uncaught exception of its scripts.
+GRACE = 0.3
+#: How many pages :func:`check_pages` has open at once, each in a tab of its own.
+BATCH = 8
 
-    ``screenshot``: a path for a full-page PNG (tiles ``<stem>-<n>.png`` for a page
-    taller than :data:`MAX_SCREENSHOT_HEIGHT`; :attr:`PageCheck.screenshot` lists them).
-    """
-    url = Path(path).resolve().as_uri()
-    res = PageCheck(url)
-    target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
-    session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})[
-        "sessionId"
-    ]
-    loaded = {"done": False}
-    requests: dict[str, str] = {}
 
-    def on_event(ev):
-        if ev.get("sessionId") != session:
-            return
+class _Page:
+    """One page's check under way: its tab (target and session) and what it did."""
+
+    def __init__(self, browser: Browser, path, screenshot):
+        self.browser, self.screenshot = browser, screenshot
+        self.url = Path(path).resolve().as_uri()
+        self.res = PageCheck(self.url)
+        self.loaded = False
+        self.requests: dict[str, str] = {}
+        # a window of its own: a background tab draws no frames (no screenshot) and has
+        # its timers throttled
+        new = {"url": "about:blank", "newWindow": True}
+        self.target = browser.send("Target.createTarget", new)["targetId"]
+        self.session = browser.send(
+            "Target.attachToTarget", {"targetId": self.target, "flatten": True}
+        )["sessionId"]
+
+    def on_event(self, ev) -> None:
+        """Answer an intercepted request (file, data, blob and about URLs go on, anything
+        else is recorded and failed) and record what the page did."""
+        res, browser, session = self.res, self.browser, self.session
         method, p = ev.get("method"), ev.get("params", {})
         if method == "Fetch.requestPaused":
             req_url = p["request"]["url"]
@@ -371,9 +389,9 @@ def check_page(browser: Browser, path, screenshot=None, timeout: float = 60.0) -
                     session,
                 )
         elif method == "Network.requestWillBeSent":
-            requests[p["requestId"]] = p["request"]["url"]
+            self.requests[p["requestId"]] = p["request"]["url"]
         elif method == "Network.loadingFailed":
-            u = requests.get(p["requestId"], "?")
+            u = self.requests.get(p["requestId"], "?")
             if u not in res.network_requests:  # the blocked ones are reported as such
                 res.failed_requests.append(f"{u} ({p.get('errorText', '')})")
         elif method == "Network.responseReceived":
@@ -393,11 +411,10 @@ def check_page(browser: Browser, path, screenshot=None, timeout: float = 60.0) -
             if not any(u and u in x for x in res.network_requests):
                 res.console_errors.append(f"{e.get('text', '')[:300]} {u}".strip())
         elif method == "Page.loadEventFired":
-            loaded["done"] = True
+            self.loaded = True
 
-    old_handler = browser.on_event
-    browser.on_event = on_event
-    try:
+    def open(self) -> None:
+        """Intercept the tab's requests, listen to it, and navigate to the page."""
         for m, params in (
             ("Fetch.enable", {"patterns": [{"urlPattern": "*"}]}),
             ("Network.enable", {}),
@@ -414,34 +431,83 @@ def check_page(browser: Browser, path, screenshot=None, timeout: float = 60.0) -
                 },
             ),
         ):
-            browser.send(m, params, session)
-        nav = browser.send("Page.navigate", {"url": url}, session)
+            self.browser.send(m, params, self.session)
+        nav = self.browser.send("Page.navigate", {"url": self.url}, self.session)
         if nav.get("errorText"):
-            res.failed_requests.append(f"{url} ({nav['errorText']})")
-        deadline = time.monotonic() + timeout
-        while not loaded["done"] and time.monotonic() < deadline:
-            browser.pump(0.2)
-        if not loaded["done"]:
-            res.console_errors.append(f"the page did not finish loading within {timeout} s")
-        _evaluate(browser, session, _SETTLE)
-        browser.pump(0.3)
+            self.res.failed_requests.append(f"{self.url} ({nav['errorText']})")
+
+    def inspect(self) -> None:
+        """What the loaded page shows (:data:`_INSPECT`), and its screenshot if asked."""
+        res = self.res
         pats = (json.dumps(list(RAW_TEX)), json.dumps(list(RAW_TEX_PROSE)))
-        info = _evaluate(browser, session, _INSPECT % pats)
+        info = _evaluate(self.browser, self.session, _INSPECT % pats)
         res.raw_tex = info["raw"]
         res.nan_cells, res.nan_examples = info["nan"], info["nanEx"]
         res.broken_images = info["broken"]
         res.width, res.height = info["width"], info["height"]
         res.overflow = max(0, info["scrollWidth"] - info["width"])
-        if screenshot is not None:
-            shots = _screenshot(browser, session, screenshot, res.height)
+        if self.screenshot is not None:
+            shots = _screenshot(self.browser, self.session, self.screenshot, res.height)
             res.screenshot = " ".join(str(p) for p in shots)
-    finally:
-        browser.on_event = old_handler
+
+    def close(self) -> None:
         try:
-            browser.send("Target.closeTarget", {"targetId": target})
+            self.browser.send("Target.closeTarget", {"targetId": self.target})
         except BrowserError:
             pass
-    return res
+
+
+def check_pages(browser: Browser, pages, timeout: float = 60.0, batch: int = BATCH):
+    """Load the HTML files ``pages`` offline and check each (see :class:`PageCheck`);
+    returns their checks in order.
+
+    ``pages`` holds paths, or ``(path, screenshot)`` pairs where ``screenshot`` is a path
+    for a full-page PNG (tiles ``<stem>-<n>.png`` for a page taller than
+    :data:`MAX_SCREENSHOT_HEIGHT`; :attr:`PageCheck.screenshot` lists them) or None.
+    ``batch`` pages at a time each load in a tab of their own, and each is inspected only
+    after it loaded (``timeout`` s at most), settled (:data:`_SETTLE`) and had
+    :data:`GRACE` s more for late errors: the tabs wait those out together (one page after
+    the other, the docs site's 212 pages took 130 s, mostly waiting)."""
+    items = [(p, None) if isinstance(p, (str, os.PathLike)) else tuple(p) for p in pages]
+    out: list[PageCheck] = []
+    old_handler = browser.on_event
+    for i in range(0, len(items), batch):
+        group: list[_Page] = []
+        sessions: dict[str, _Page] = {}
+
+        def route(ev, sessions=sessions):
+            page = sessions.get(ev.get("sessionId"))
+            if page is not None:  # other tabs' and the browser's own events: not ours
+                page.on_event(ev)
+
+        browser.on_event = route
+        try:
+            for path, shot in items[i : i + batch]:
+                page = _Page(browser, path, shot)
+                group.append(page)
+                sessions[page.session] = page
+                page.open()
+            browser.pump(timeout, until=lambda g=group: all(p.loaded for p in g))
+            for page in group:
+                if not page.loaded:
+                    page.res.console_errors.append(
+                        f"the page did not finish loading within {timeout} s"
+                    )
+                _evaluate(browser, page.session, _SETTLE)
+            browser.pump(GRACE)
+            for page in group:
+                page.inspect()
+                out.append(page.res)
+        finally:
+            browser.on_event = old_handler
+            for page in group:
+                page.close()
+    return out
+
+
+def check_page(browser: Browser, path, screenshot=None, timeout: float = 60.0) -> PageCheck:
+    """Load the HTML file ``path`` offline and check it (:func:`check_pages` of one page)."""
+    return check_pages(browser, [(path, screenshot)], timeout)[0]
 
 
 def _evaluate(browser: Browser, session: str, expr: str) -> dict:
@@ -499,7 +565,7 @@ def check_folder(folder, shots=None, browser: Browser | None = None) -> list[Pag
     own = browser is None
     browser = browser or Browser()
     try:
-        checks = []
+        pages = []
         for page in report_pages(folder):
             rel = page.relative_to(folder).as_posix()
             shot = (
@@ -507,7 +573,8 @@ def check_folder(folder, shots=None, browser: Browser | None = None) -> list[Pag
                 if shots
                 else None
             )
-            checks.append(check_page(browser, page, shot))
+            pages.append((page, shot))
+        checks = check_pages(browser, pages)
     finally:
         if own:
             browser.close()

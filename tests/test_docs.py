@@ -272,7 +272,7 @@ def test_no_broken_local_link_anchor_or_image(site):
 @pytest.mark.docs
 @pytest.mark.browser
 def test_every_page_loads_offline_in_chromium(site):
-    from ._browser import Browser, check_page, find_chromium
+    from ._browser import Browser, check_pages, find_chromium
 
     chromium = find_chromium()
     if chromium is None:
@@ -284,12 +284,12 @@ def test_every_page_loads_offline_in_chromium(site):
     assert len(pages) > 50
     problems = {}
     with Browser(chromium) as browser:
-        for page in pages:
-            check = check_page(browser, page, timeout=30)
-            # "NaN in a table cell" is a report's missing number; the API tables hold
-            # docstring summaries, which may name NaN (e.g. "... NaN where either is empty")
-            check.nan_cells = 0
-            found = check.problems
-            if found:
-                problems[page.relative_to(site).as_posix()] = found
+        checks = check_pages(browser, pages, timeout=30)
+    for page, check in zip(pages, checks, strict=True):
+        # "NaN in a table cell" is a report's missing number; the API tables hold
+        # docstring summaries, which may name NaN (e.g. "... NaN where either is empty")
+        check.nan_cells = 0
+        found = check.problems
+        if found:
+            problems[page.relative_to(site).as_posix()] = found
     assert not problems, f"{len(problems)} of {len(pages)} pages fail: {problems}"
