@@ -37,6 +37,7 @@ from ._browser import (
     PageCheck,
     check_folder,
     check_page,
+    check_pages,
     find_chromium,
     report_pages,
 )
@@ -179,6 +180,29 @@ def test_every_defect_is_caught_and_nothing_leaves_the_browser(browser, tmp_path
     assert c.nan_cells == 2 and c.nan_examples == ["NaN", "nan NaN PC_{3,1}"]
     assert c.overflow > 1500
     assert len(c.problems) >= 8
+
+
+@needs_chromium
+def test_pages_checked_together_are_checked_as_each_alone(browser, tmp_path, server):
+    """check_pages keeps several pages open at once: each keeps its own defects and height,
+    and the replies to what the pages' requests are answered with (posted while the next
+    page's tab opens) are not taken for that tab's own (a KeyError: 'targetId' once)."""
+    port, hits = server
+    (tmp_path / "pixel.png").write_bytes(PIXEL)
+    pages = []
+    for i in range(6):
+        page = tmp_path / f"p{i}.html"
+        body = GOOD if i % 2 else _bad(port)
+        page.write_text(body.replace("</body>", "<p>x</p>" * (40 * i) + "</body>"), "utf-8")
+        pages.append(page)
+    alone = [check_page(browser, p) for p in pages]
+    together = check_pages(browser, pages, batch=4)
+    assert [(c.url, c.height, c.problems) for c in together] == [
+        (c.url, c.height, c.problems) for c in alone
+    ]
+    assert [bool(c.problems) for c in together] == [True, False] * 3
+    assert len({c.height for c in together}) > 3  # each page's own height
+    assert hits == []
 
 
 @needs_chromium
