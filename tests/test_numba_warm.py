@@ -9,6 +9,7 @@ import sys
 import textwrap
 import threading
 import time
+from pathlib import Path
 
 import pytest
 
@@ -128,17 +129,21 @@ def test_each_part_is_waited_for_on_its_own(tmp_path):
     pid.write_text(dead.strip(), encoding="utf-8")
     assert not _quick(folder, ["antenna"])
     zombie = subprocess.Popen([sys.executable, "-c", "pass"])
-    time.sleep(1.0)  # ended, not reaped: os.kill(pid, 0) still succeeds
+    stat = Path(f"/proc/{zombie.pid}/stat")
+    for _ in range(100):  # until it ended, not reaped: os.kill(pid, 0) still succeeds
+        if stat.read_text(encoding="utf-8").rpartition(")")[2].split()[0] == "Z":
+            break
+        time.sleep(0.05)
     pid.write_text(str(zombie.pid), encoding="utf-8")
     assert not _quick(folder, ["antenna"])
     zombie.wait()
     # a running warm-up: the wait ends when the part appears, or when it failed
     pid.write_text(str(os.getpid()), encoding="utf-8")
-    timer = threading.Timer(0.5, (folder / "antenna").mkdir)
+    timer = threading.Timer(0.3, (folder / "antenna").mkdir)
     timer.start()
     t = time.monotonic()
     assert warm.wait_for_warm_cache(folder, timeout=60)
-    assert 0.4 < time.monotonic() - t < 5
+    assert 0.25 < time.monotonic() - t < 5
     timer.join()
     folder.with_name("stamp.failed").write_text("gamma: boom", encoding="utf-8")
     assert not _quick(folder, ["gamma"])
