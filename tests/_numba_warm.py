@@ -322,8 +322,9 @@ def build_warm_cache(folder: Path) -> None:
             if done:  # a stamp folder's mtime is when its last part was renamed in
                 newest = max(done, key=lambda d: d.stat().st_mtime)
                 shutil.copytree(newest / part, tmp / part, dirs_exist_ok=True)
-            else:  # none: what a build of these sources compiled (snakemake -c2 first)
-                seed_from_builds(tmp / part, folder.parent.parent)
+            # and what a build of these sources compiled (snakemake -c2 first), where newer:
+            # an earlier warm cache may be another clone's, whose paths name other folders
+            seed_from_builds(tmp / part, folder.parent.parent)
         for part in todo:
             with open(tmp / f"{part}.err", "w") as err:  # the child keeps its own copy
                 procs[part] = subprocess.Popen(
