@@ -13,11 +13,12 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
+import yaml
 
 import abglib
 from abglib.replications.compare import COMPARISON_COLUMNS, SCORECARD_COLUMNS, VERDICTS
 
-from .conftest import OLD_REPORT, SMALL_BUILD, require, snakemake
+from .conftest import OLD_REPORT, SMALL, SMALL_BUILD, require, snakemake
 
 pytestmark = pytest.mark.pipeline
 # the tests that read only run 1 run on the worker that builds it; those that read run 2
@@ -62,6 +63,28 @@ def test_outputs_exist(run1):
     ]:
         assert (d / rel).is_file(), rel
     assert (d / "logs").is_dir()
+
+
+@on_run1
+def test_every_script_job_has_a_benchmark_record_of_its_own(run1):
+    """Each document's study and claims jobs (and every job with a benchmark record) timed
+    on its own process (abglib.common.jobs.write_benchmark): a 1-thread job cannot use
+    more CPU than its wall time, which Snakemake's sampler of the whole process tree broke
+    (the Al-Wagih claims job: 23.9 CPU-s in 10.8 s)."""
+    from abglib.common.jobs import BENCHMARK_COLUMNS
+
+    bench = run1 / "benchmarks" / "results"
+    records = sorted(bench.rglob("*.tsv"))
+    stems = {p.relative_to(bench).with_suffix("").as_posix() for p in records}
+    for doc in yaml.safe_load(SMALL.read_text(encoding="utf-8"))["docs"]:
+        assert {f"{doc}/study", f"{doc}/claims"} <= stems, doc
+    for path in records:
+        rel = path.relative_to(bench).with_suffix(".log")
+        assert (run1 / "logs" / rel).is_file(), rel  # the record's job and its log
+        df = pd.read_csv(path, sep="\t")
+        assert tuple(df.columns) == BENCHMARK_COLUMNS and len(df) == 1, path
+        s, cpu = float(df["s"].iloc[0]), float(df["cpu_time"].iloc[0])
+        assert 0 <= cpu <= s + 0.05, (path, s, cpu)
 
 
 @on_run1

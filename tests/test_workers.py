@@ -123,6 +123,117 @@ def test_in_place_runs_here_and_gives_stderr_back(script, tmp_path, monkeypatch)
     del json._abglib_marker  # the in-place run changed this process, as intended
 
 
+BURN = """
+import time
+from abglib.common.jobs import log_to
+
+log_to(snakemake.log[0])
+start = time.process_time()
+while time.process_time() - start < snakemake.params.value:
+    pass
+open(snakemake.output.out, "w").close()
+"""
+
+
+def _record(path):
+    import csv
+
+    from abglib.common.jobs import BENCHMARK_COLUMNS
+
+    with open(path, encoding="utf-8") as fh:
+        rows = list(csv.reader(fh, delimiter="\t"))
+    assert rows[0] == list(BENCHMARK_COLUMNS) and len(rows) == 2
+    return dict(zip(rows[0], rows[1], strict=True))
+
+
+@fork_server
+@pytest.mark.slow  # two jobs in the fork server at once
+def test_each_job_is_timed_on_its_own_process_alone(tmp_path, monkeypatch):
+    """Two jobs run side by side as Snakemake runs them (threads of one process), each
+    using 0.4 CPU-s: each record holds its own job's CPU time, not the other's too (what
+    Snakemake's benchmark: sampler recorded, abglib.common.jobs.write_benchmark)."""
+    import threading
+
+    monkeypatch.chdir(tmp_path)
+    script = tmp_path / "burn.py"
+    script.write_text(BURN, encoding="utf-8")
+    run_script(script, _job(tmp_path, "warm", value=0.0))  # the server's imports, first
+    jobs = [
+        threading.Thread(
+            target=run_script,
+            args=(script, _job(tmp_path, name, value=0.4)),
+            kwargs={"benchmark": tmp_path / "bench" / f"{name}.tsv"},
+        )
+        for name in ("a", "b")
+    ]
+    for job in jobs:
+        job.start()
+    for job in jobs:
+        job.join()
+    for name in ("a", "b"):
+        rec = _record(tmp_path / "bench" / f"{name}.tsv")
+        # the job's loop (0.4 CPU-s) and its fork's own start, well under both jobs' 0.8
+        assert 0.4 <= float(rec["cpu_time"]) < 0.6, rec
+        assert float(rec["s"]) >= float(rec["cpu_time"]) - 0.02, rec  # one thread
+        assert rec["h:m:s"] == "0:00:00"
+        assert 50 < float(rec["max_rss"]) < 4096, rec  # MiB: the fork's, not the tree's
+    assert not list((tmp_path / "bench").glob(".*"))  # no part file left
+
+
+@fork_server
+@pytest.mark.slow  # a job in the fork server
+def test_a_failed_job_leaves_no_benchmark_record(script, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    bench = tmp_path / "a.tsv"
+    with pytest.raises(JobFailed):
+        run_script(script, _job(tmp_path, "a", fail=True), benchmark=bench)
+    with pytest.raises(JobFailed):
+        run_script(script, _job(tmp_path, "b", fail=True), in_worker=False, benchmark=bench)
+    assert not bench.exists()
+
+
+def test_in_place_a_job_is_timed_from_its_start(tmp_path, monkeypatch):
+    # on a cluster the job's process ran Snakemake before the script: only the script's
+    # CPU time is the job's
+    monkeypatch.chdir(tmp_path)
+    script = tmp_path / "burn.py"
+    script.write_text(BURN, encoding="utf-8")
+    stderr, hook = sys.stderr, sys.excepthook
+    run_script(script, _job(tmp_path, "a", value=0.3), in_worker=False, benchmark="a.tsv")
+    assert (sys.stderr, sys.excepthook) == (stderr, hook)
+    rec = _record(tmp_path / "a.tsv")
+    assert 0.3 <= float(rec["cpu_time"]) < 0.45, rec
+    assert float(rec["s"]) >= 0.3
+
+
+def test_benchmark_record_format_and_bad_times(tmp_path):
+    from abglib import AbglibValueError
+    from abglib.common.jobs import process_usage, write_benchmark
+
+    usage = {"cpu_time": 3725.5, "max_rss": 1234.567}
+    write_benchmark(tmp_path / "x" / "r.tsv", 3725.25, usage)
+    rec = _record(tmp_path / "x" / "r.tsv")
+    assert rec == {
+        "s": "3725.2500",
+        "h:m:s": "1:02:05",
+        "max_rss": "1234.57",
+        "cpu_time": "3725.50",
+    }
+    for bad in (-1.0, float("nan")):
+        with pytest.raises(AbglibValueError, match="at least 0 s, got"):
+            write_benchmark(tmp_path / "y.tsv", bad, usage)
+    assert not (tmp_path / "y.tsv").exists()
+    # process_usage against the standard library's own clock of this process
+    import time
+
+    before, t0 = process_usage(), time.process_time()
+    while time.process_time() - t0 < 0.2:
+        pass
+    spent = process_usage()["cpu_time"] - before["cpu_time"]
+    assert abs(spent - (time.process_time() - t0)) < 0.05
+    assert process_usage()["max_rss"] > 10  # MiB: this interpreter with numpy loaded
+
+
 def test_a_missing_script_is_named(tmp_path):
     with pytest.raises(JobFailed, match="no workflow script .*nope.py"):
         run_script(tmp_path / "nope.py", _job(tmp_path, "a"))

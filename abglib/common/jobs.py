@@ -1,4 +1,5 @@
-"""How a pipeline job runs: on the threads Snakemake gave it, logging to its own file.
+"""How a pipeline job runs: on the threads Snakemake gave it, logging to its own file,
+timed on its own.
 
 Shared by the benchmark's cells (:mod:`abglib.bench.cell`, run inside Snakemake's
 process), the reports' worker processes (:mod:`abglib.reporting.workers`) and every
@@ -9,12 +10,21 @@ from __future__ import annotations
 
 import contextlib
 import logging
+import os
 import sys
 from pathlib import Path
 
 from .._checks import AbglibValueError
 
-__all__ = ["JobFailed", "job_log", "job_threads", "log_to"]
+__all__ = [
+    "BENCHMARK_COLUMNS",
+    "JobFailed",
+    "job_log",
+    "job_threads",
+    "log_to",
+    "process_usage",
+    "write_benchmark",
+]
 
 
 def log_to(path) -> logging.Logger:
@@ -100,3 +110,63 @@ def job_log(path, name: str = "job"):
         handler.close()
         logger.handlers.clear()
         logging.Logger.manager.loggerDict.pop(logger.name, None)
+
+
+#: The columns of a job's benchmark record (``benchmarks/results/<job>.tsv``): the job's
+#: wall time in seconds and as ``h:m:s``, the peak resident set of its process (MiB) and
+#: the CPU time it used (user + system, s), named as in Snakemake's ``benchmark:`` files.
+BENCHMARK_COLUMNS = ("s", "h:m:s", "max_rss", "cpu_time")
+
+
+def process_usage() -> dict[str, float]:
+    """The calling process's ``cpu_time`` so far (user + system seconds, its own and its
+    waited-for children's) and ``max_rss``, its peak resident set so far (MiB), from
+    :func:`resource.getrusage`; NaN each where the platform has no ``resource`` module.
+    """
+    try:
+        import resource
+    except ImportError:  # not POSIX
+        return {"cpu_time": float("nan"), "max_rss": float("nan")}
+    own = resource.getrusage(resource.RUSAGE_SELF)
+    kids = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = own.ru_utime + own.ru_stime + kids.ru_utime + kids.ru_stime
+    # ru_maxrss: kibibytes on Linux, bytes on macOS
+    rss = own.ru_maxrss / (2**20 if sys.platform == "darwin" else 2**10)
+    return {"cpu_time": cpu, "max_rss": rss}
+
+
+def write_benchmark(path, seconds: float, usage: dict[str, float]) -> Path:
+    """Write a job's benchmark record (:data:`BENCHMARK_COLUMNS`) to ``path``: a header
+    line and one row, tab-separated, the file whole or not at all.
+
+    Snakemake's own ``benchmark:`` directive is not used for the workflow's script jobs:
+    it samples the process that runs the job and all of that process's children, twice a
+    second (psutil's ``memory_full_info`` of each, reading ``/proc/<pid>/smaps_rollup``).
+    A local build runs its jobs as threads of Snakemake's process, so every record summed
+    Snakemake, the fork server and every job running at the time: a small build's
+    Al-Wagih claims job, which used 9.5 CPU-s alone, was recorded at 23.9 CPU-s and
+    1,326 MB, and the sampling itself cost the build about 1.7 CPU-s of its 31
+    (2026-12-03, issue 24). Each job here times its own process (:func:`process_usage`).
+
+    Parameters
+    ----------
+    path : path-like
+        The record's file; its folder is made.
+    seconds : float
+        The job's wall time (s), at least 0.
+    usage : dict
+        ``cpu_time`` (s) and ``max_rss`` (MiB) of the job's process
+        (:func:`process_usage`, or the difference of two for ``cpu_time``).
+    """
+    seconds = float(seconds)
+    if not seconds >= 0.0:
+        raise AbglibValueError(f"a job's wall time must be at least 0 s, got {seconds!r}")
+    whole = int(seconds)
+    hms = f"{whole // 3600}:{whole // 60 % 60:02d}:{whole % 60:02d}"
+    row = (f"{seconds:.4f}", hms, f"{usage['max_rss']:.2f}", f"{usage['cpu_time']:.2f}")
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    part = path.with_name(f".{path.name}.{os.getpid()}.part")
+    part.write_text("\t".join(BENCHMARK_COLUMNS) + "\n" + "\t".join(row) + "\n", "utf-8")
+    part.replace(path)
+    return path

@@ -27,10 +27,11 @@ import os
 import runpy
 import sys
 import threading
+import time
 import traceback
 from pathlib import Path
 
-from ..common.jobs import JobFailed, job_threads
+from ..common.jobs import JobFailed, job_threads, process_usage, write_benchmark
 
 __all__ = [
     "PRELOAD",
@@ -222,7 +223,10 @@ _STATUS_LOST = 255
 
 
 def _worker(script, smk, cwd, conn) -> None:
-    """Body of the worker process: the script, then its outcome over ``conn``."""
+    """Body of the worker process: the script, then its outcome over ``conn``: the
+    error's message (a str), or on success the process's usage (a dict,
+    :func:`~abglib.common.jobs.process_usage`: a forked process starts with no CPU time
+    of its own)."""
     try:
         os.chdir(cwd)
         _execute(script, smk)
@@ -233,11 +237,11 @@ def _worker(script, smk, cwd, conn) -> None:
         conn.send(f"{type(err).__name__}: {err}")
         conn.close()
         os._exit(1)
-    conn.send(None)
+    conn.send(process_usage())
     conn.close()
 
 
-def run_script(script, smk, *, in_worker: bool = True) -> None:
+def run_script(script, smk, *, in_worker: bool = True, benchmark=None) -> None:
     """Run the workflow script ``script`` (a path) for one job.
 
     ``smk`` is the job's ``snakemake`` object (:func:`script_object`). ``in_worker``:
@@ -245,13 +249,19 @@ def run_script(script, smk, *, in_worker: bool = True) -> None:
     whose jobs are threads); else run it here, in the job's own process, with
     ``sys.stderr`` and the excepthook given back afterwards. Raises :class:`JobFailed`
     naming the script, the error and the job's log when the script fails.
+
+    ``benchmark``: a path where a job that succeeded gets its benchmark record
+    (:func:`~abglib.common.jobs.write_benchmark`): the job's wall time, and the CPU time
+    and peak resident set of the process it ran in (the fork, or from here on in place).
     """
     script = Path(script)
     if not script.is_file():
         raise JobFailed(f"no workflow script {script}")
     log = f" (full traceback in {smk.log[0]})" if len(smk.log) else ""
+    start = time.perf_counter()
     if not in_worker:
         saved = sys.stderr, sys.excepthook
+        before = process_usage()
         try:
             _execute(script, smk)
         except Exception as err:
@@ -259,6 +269,10 @@ def run_script(script, smk, *, in_worker: bool = True) -> None:
             raise JobFailed(f"{script.name} failed: {type(err).__name__}: {err}{log}") from err
         finally:
             sys.stderr, sys.excepthook = saved
+        if benchmark is not None:
+            usage = process_usage()
+            usage["cpu_time"] -= before["cpu_time"]
+            write_benchmark(benchmark, time.perf_counter() - start, usage)
         return
     ctx = _context()
     receive, send = ctx.Pipe(duplex=False)
@@ -273,6 +287,11 @@ def run_script(script, smk, *, in_worker: bool = True) -> None:
         outcome = "the worker process ended without reporting"
     proc.join()
     receive.close()
+    seconds = time.perf_counter() - start
+    if isinstance(outcome, dict):  # success: the worker's usage
+        usage, outcome = outcome, None
+        if benchmark is not None and proc.exitcode in (0, _STATUS_LOST):
+            write_benchmark(benchmark, seconds, usage)
     if outcome is None and proc.exitcode == _STATUS_LOST:
         # the worker said it finished (its outputs are written); 255 is what
         # multiprocessing's forkserver Popen reports when it could not read the child's

@@ -138,6 +138,7 @@ def run_script(input, output, params, wildcards, threads, resources, log, rulena
         Path(workflow.basedir) / params.script,
         smk,
         in_worker=jobs_run_here(),
+        benchmark=getattr(log, "benchmark", None),
     )
 
 
@@ -165,18 +166,21 @@ def script_rule(
     Only what varies between such rules is given: ``input`` and ``output`` (named files),
     ``params`` beyond ``script`` and ``code`` (script_params of ``script``, ``sources``
     and ``extra``), the log's stem ``log`` (``logs/<log>.log``, and with ``benchmark``
-    the job's timing ``benchmarks/results/<log>.tsv``), and any ``priority``, ``threads``
-    and ``resources``. Every such rule gets the same conda environment and the same
-    ``run:`` (scripts.smk). Returns the declaration (its ``output`` stands for
-    ``rules.<name>.output``, which exists only once scripts.smk has run).
+    a second log, the job's benchmark record ``benchmarks/results/<log>.tsv``, which
+    run_script writes: abglib.common.jobs.write_benchmark says why not Snakemake's
+    ``benchmark:``), and any ``priority``, ``threads`` and ``resources``. Every such rule
+    gets the same conda environment and the same ``run:`` (scripts.smk). Returns the
+    declaration (its ``output`` stands for ``rules.<name>.output``, which exists only once
+    scripts.smk has run).
     """
     if name in SCRIPT_RULES:
         raise WorkflowError(f"rule {name!r} is declared twice")
     SCRIPT_RULES[name] = {
         "input": dict(input or {}),
         "output": dict(output),
-        "log": f"logs/{log}.log",
-        "benchmark": f"benchmarks/results/{log}.tsv" if benchmark else None,
+        # the job's own log first (a script's snakemake.log[0]), then its benchmark record
+        "log": {"job": f"logs/{log}.log"}
+        | ({"benchmark": f"benchmarks/results/{log}.tsv"} if benchmark else {}),
         "params": {**script_params(script, *sources, extra=extra), **(params or {})},
         "priority": priority,
         "threads": threads,

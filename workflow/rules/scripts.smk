@@ -4,53 +4,23 @@
 # one conda environment. Included last, once every declaration is in.
 
 for name, job in SCRIPT_RULES.items():
-    if job["benchmark"]:
 
-        rule:
-            name:
-                name
-            input:
-                **job["input"],
-            output:
-                **job["output"],
-            log:
-                job["log"],
-            benchmark:
-                job["benchmark"]
-            priority: job["priority"]
-            conda:
-                "../envs/abglib.yaml"
-            threads: job["threads"]
-            resources:
-                **job["resources"],
-            params:
-                **job["params"],
-            run:
-                run_script(
-                    input, output, params, wildcards, threads, resources, log, rule
-                )
-
-    else:
-
-        # the same rule without a benchmark file (Snakemake has no empty benchmark:)
-        rule:
-            name:
-                name
-            input:
-                **job["input"],
-            output:
-                **job["output"],
-            log:
-                job["log"],
-            priority: job["priority"]
-            conda:
-                "../envs/abglib.yaml"
-            threads: job["threads"]
-            resources:
-                **job["resources"],
-            params:
-                **job["params"],
-            run:
-                run_script(
-                    input, output, params, wildcards, threads, resources, log, rule
-                )
+    rule:
+        name:
+            name
+        input:
+            **job["input"],
+        output:
+            **job["output"],
+        log:
+            **job["log"],
+        priority: job["priority"]
+        conda:
+            "../envs/abglib.yaml"
+        threads: job["threads"]
+        resources:
+            **job["resources"],
+        params:
+            **job["params"],
+        run:
+            run_script(input, output, params, wildcards, threads, resources, log, rule)
