@@ -96,15 +96,6 @@ def extended(tmp_path_factory, small_build):
     return SimpleNamespace(work=work, code=code, extra=extra, dry=dry.stdout)
 
 
-def _bad_entry(work: Path, entry: str) -> str:
-    """What a dry run says of a config whose one variant is ``entry`` (it must fail)."""
-    bad = work.parent / "bad.yaml"
-    bad.write_text(f"benchmark:\n  variants:\n    typo: {entry}\n", encoding="utf-8")
-    out = _snakemake(work, str(SMALL), str(bad), "-n", LEAGUE)
-    assert out.returncode != 0, out.stdout[-2000:]
-    return out.stdout + out.stderr
-
-
 @pytest.mark.xdist_group(SMALL_BUILD)
 def test_new_variant_schedules_only_its_cells(extended):
     jobs = _scheduled(extended.dry)
@@ -119,9 +110,6 @@ def test_new_variant_schedules_only_its_cells(extended):
     assert (league.groupby("scenario")["rank"].max() == 5).all()
     bb = league[league["variant"] == "extra_bb"].iloc[0]
     assert bb["rule"] == "benedict_bordner" and bb["alpha"] == 0.4
-    # a bad entry fails at parse time, naming the variant and the allowed parameters
-    said = _bad_entry(extended.work, "{rule: benedict_bordner, alpah: 0.4}")
-    assert "variant 'typo'" in said and "allowed: alpha" in said
 
 
 @pytest.mark.xdist_group(SMALL_BUILD)
@@ -151,9 +139,27 @@ def test_a_users_own_tracker_runs_in_the_matrix(extended):
         assert all("/mine_" in c for c in jobs["benchmark_cell"]), jobs
     finally:  # the module's build stays as built for the test above
         code.write_text(USER_TRACKERS, encoding="utf-8")
-    # a name that is not there stops the workflow at parse time, naming the variant
-    said = _bad_entry(work, f"{{callable: '{code}:my_gainz', alpha: 0.4}}")
-    assert "variant 'typo'" in said and "has no function 'my_gainz'" in said
+
+
+@pytest.mark.xdist_group(SMALL_BUILD)
+def test_every_bad_variant_is_named_at_parse_time(extended):
+    """A misspelt parameter of a built-in rule and a user's function that is not there: the
+    dry run stops at parse time with one error naming both variants, what is wrong with
+    each and the allowed parameters, and the good variants say nothing."""
+    bad = extended.work.parent / "bad.yaml"
+    bad.write_text(
+        "benchmark:\n  variants:\n"
+        "    typo: {rule: benedict_bordner, alpah: 0.4}\n"
+        "    fine: {rule: benedict_bordner, alpha: 0.4}\n"
+        f"    gone: {{callable: '{extended.code}:my_gainz', alpha: 0.4}}\n",
+        encoding="utf-8",
+    )
+    out = _snakemake(extended.work, str(SMALL), str(bad), "-n", LEAGUE)
+    assert out.returncode != 0, out.stdout[-2000:]
+    said = out.stdout + out.stderr
+    assert "variant 'typo'" in said and "allowed: alpha" in said, said[-2000:]
+    assert "variant 'gone'" in said and "has no function 'my_gainz'" in said, said[-2000:]
+    assert "variant 'fine'" not in said
 
 
 def test_regenerated_cell_datasets_are_shared_read_only_and_every_variant_runs_on_them():

@@ -274,9 +274,11 @@ BENCH_SCENARIOS = list(BENCH.get("scenarios", []))
 def _check_benchmark():
     """Fail at parse time on an unknown scenario, rule or parameter, on a variant no
     scenario can realise, or on a user's callable that cannot be loaded, raises or returns
-    neither gains nor a tracker on any scenario (each message names the variant)."""
+    neither gains nor a tracker on any scenario: one error naming every such variant, so
+    that a config with several mistakes is mended in one go."""
     for s in BENCH_SCENARIOS:
         dataset_files(s)
+    problems = []
     for name, spec in BENCH_SPECS.items():
         errors = []
         for s in BENCH_SCENARIOS:
@@ -285,13 +287,16 @@ def _check_benchmark():
                 check_variant(spec, float(sc["dt"]), int(sc["n_samples"]), name)
             except ValueError as exc:
                 if "callable" in spec:
-                    raise WorkflowError(f"benchmark variant {name!r}: {exc}") from None
+                    problems.append(f"benchmark variant {name!r}: {exc}")
+                    break
                 errors.append(f"{s}: {exc}")
-        if BENCH_SCENARIOS and len(errors) == len(BENCH_SCENARIOS):
-            raise WorkflowError(
+        if "callable" not in spec and errors and len(errors) == len(BENCH_SCENARIOS):
+            problems.append(
                 f"benchmark variant {name!r} is infeasible on every scenario:\n  "
                 + "\n  ".join(errors)
             )
+    if problems:
+        raise WorkflowError("\n".join(problems))
 
 
 def bench_cell_code(wildcards):
