@@ -84,7 +84,8 @@ def test_every_script_job_has_a_benchmark_record_of_its_own(run1):
         df = pd.read_csv(path, sep="\t")
         assert tuple(df.columns) == BENCHMARK_COLUMNS and len(df) == 1, path
         s, cpu = float(df["s"].iloc[0]), float(df["cpu_time"].iloc[0])
-        assert 0 <= cpu <= s + 0.05, (path, s, cpu)
+        # one thread (a BLAS call may briefly take a second): far from the tree's sum
+        assert 0 <= cpu <= 1.25 * s + 0.1, (path, s, cpu)
 
 
 @on_run1
