@@ -339,13 +339,9 @@ class _LostStatus:
             exitcode = None
 
             def start(self):
-                script, smk, cwd, conn = args
-                # the worker's success path, without its os._exit: send None and close
-                from abglib.reporting.workers import _execute
-
-                _execute(script, smk)
-                conn.send(None)
-                conn.close()
+                # the worker's own body, here (a job that succeeds: it sends its usage
+                # and closes, with no os._exit)
+                target(*args)
 
             def join(self):
                 self.exitcode = ctx._exitcode
@@ -364,11 +360,14 @@ def test_a_lost_exit_status_after_reported_success_counts_as_done(
     monkeypatch.chdir(tmp_path)
     monkeypatch.setattr(workers, "_context", lambda: _LostStatus(exitcode))
     job = _job(tmp_path, "a", value=1.5)
+    bench = tmp_path / "a.tsv"
     if ok:
-        run_script(script, job)
+        run_script(script, job, benchmark=bench)
         assert _read(tmp_path, "a")["value"] == 1.5
+        assert float(_record(bench)["cpu_time"]) >= 0  # a job that counts as done
         # (the message goes to this process's stderr, which the fake's in-place run of
         # the script has handed to the job's log handler: not asserted here)
     else:
         with pytest.raises(JobFailed, match=rf"no error reported \(worker exit code {exitcode}\)"):
-            run_script(script, job)
+            run_script(script, job, benchmark=bench)
+        assert not bench.exists()
