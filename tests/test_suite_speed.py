@@ -89,7 +89,14 @@ def test_pytest_seconds_reads_the_last_summary_line():
     assert suite_speed.pytest_seconds("Interrupted: no tests ran\n") is None
 
 
-def test_bad_run_counts_are_refused(capsys):
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--runs", "0"], "--runs must be at least 1, got 0"),
+        (["--target", "-5"], "--target must be a positive number of seconds, got -5.0"),
+    ],
+)
+def test_bad_arguments_are_refused_by_name(args, message, capsys):
     with pytest.raises(SystemExit):
-        suite_speed.main(["--runs", "0"])
-    assert "--runs must be at least 1, got 0" in capsys.readouterr().err
+        suite_speed.main(args)
+    assert message in capsys.readouterr().err
