@@ -2,6 +2,7 @@
 
 import copy
 import shutil
+import subprocess
 import sys
 from pathlib import Path
 
@@ -10,7 +11,6 @@ import yaml
 
 from abglib.reporting.pipeline import config_errors
 
-from . import _snakemake_cli
 from .conftest import require
 
 REPO = Path(__file__).resolve().parents[1]
@@ -82,7 +82,7 @@ def test_snakemake_reports_the_bad_key(tmp_path):
     bad = _with(["steelman1978", "figures", "fig1", "axes"], "semilog")
     cfgfile = tmp_path / "bad.yaml"
     cfgfile.write_text(yaml.safe_dump(bad, allow_unicode=True), encoding="utf-8")
-    out = _snakemake_cli.run(
+    out = subprocess.run(
         [
             str(exe if exe.exists() else "snakemake"),
             "-n",
@@ -93,6 +93,8 @@ def test_snakemake_reports_the_bad_key(tmp_path):
             "--configfile",
             str(cfgfile),
         ],
+        capture_output=True,
+        text=True,
         timeout=120,
     )
     assert out.returncode != 0

@@ -10,7 +10,6 @@ from pathlib import Path
 
 import pytest
 
-from . import _snakemake_cli
 from ._repo_copy import copy_env, copy_repo
 
 REPO = Path(__file__).resolve().parents[1]
@@ -19,7 +18,7 @@ SNAKEMAKE = Path(sys.executable).parent / "snakemake"
 
 def _run(*args):
     exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
-    return _snakemake_cli.run([exe, *args], cwd=REPO, timeout=300)
+    return subprocess.run([exe, *args], capture_output=True, text=True, cwd=REPO, timeout=300)
 
 
 @pytest.mark.slow
@@ -73,7 +72,7 @@ def _in_copy(repo: Path, work: Path, *args):
     exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
     cmd = [exe, "-s", str(repo / "Snakefile"), "-d", str(work), "--configfile", str(SMALL)]
     env = copy_env(repo)
-    return _snakemake_cli.run([*cmd, *args], timeout=600, env=env)
+    return subprocess.run([*cmd, *args], capture_output=True, text=True, timeout=600, env=env)
 
 
 def _scheduled_rules(stdout: str) -> set[str]:

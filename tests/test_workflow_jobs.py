@@ -14,14 +14,13 @@ from __future__ import annotations
 
 import os
 import re
+import subprocess
 import sys
 from collections import Counter
 from pathlib import Path
 
 import pytest
 import yaml
-
-from . import _snakemake_cli
 
 # Snakemake dry runs of both configs (about 5 CPU-s): not in the fast loop. One worker runs
 # the module, so that each config's dry run is made once (a module fixture is made once
@@ -118,8 +117,9 @@ def dry_run(request, tmp_path_factory):
     exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
     cmd = [exe, "-s", str(REPO / "Snakefile"), "-d", str(work), "--configfile", str(CONFIGS[name])]
     env = {**os.environ, "PYTHONPROFILEIMPORTTIME": "1"}
-    # a fresh interpreter: the profile records every import from its start
-    out = _snakemake_cli.run([*cmd, "-n", "--forceall"], cwd=REPO, timeout=300, env=env, fresh=True)
+    out = subprocess.run(
+        [*cmd, "-n", "--forceall"], capture_output=True, text=True, cwd=REPO, timeout=300, env=env
+    )
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
     config = yaml.safe_load(CONFIGS[name].read_text(encoding="utf-8"))
     imported = {m.group(1) for m in map(IMPORT_TIME.match, out.stderr.splitlines()) if m}
@@ -207,7 +207,9 @@ def test_every_documents_rules_exist_whatever_the_config_builds():
     """The five documents' rules are defined even when a config builds fewer of them (the
     SLURM profile and the tests name them)."""
     exe = str(SNAKEMAKE) if SNAKEMAKE.exists() else "snakemake"
-    out = _snakemake_cli.run([exe, "--list-rules"], cwd=REPO, timeout=300)
+    out = subprocess.run(
+        [exe, "--list-rules"], capture_output=True, text=True, cwd=REPO, timeout=300
+    )
     assert out.returncode == 0, out.stderr[-3000:]
     rules = set(out.stdout.split())
     from abglib.replications import DOCS
