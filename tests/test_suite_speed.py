@@ -13,7 +13,7 @@ _spec = importlib.util.spec_from_file_location("suite_speed", SCRIPT)
 suite_speed = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(suite_speed)
 
-#: a process that starts a grandchild burning ``BURN`` CPU-seconds, and exits at once: the
+#: a process that starts a grandchild burning argv[1] CPU-seconds, and exits at once: the
 #: grandchild is left to whoever reaps orphans, as Snakemake's fork server is
 DETACHED = """
 import os, sys, time
@@ -34,7 +34,7 @@ import sys
 sys.path.insert(0, {bench!r})
 import suite_speed as s
 sub = s.become_subreaper() if {reap!r} else False
-code, wall, cpu = s.run_counted([sys.executable, "-c", {code!r}, {burn!r}], linger=5)
+code, wall, cpu = s.run_counted([sys.executable, "-c", {code!r}, {burn!r}], linger=30)
 print(sub, code, cpu)
 """
 
