@@ -194,8 +194,13 @@ def test_missing_columns_and_folders_are_refused(tmp_path):
     with pytest.raises(AbglibValueError, match="must be a directory, got"):
         diff_folders(tmp_path / "absent", good)
     (tmp_path / "empty").mkdir()
-    with pytest.raises(AbglibValueError, match="holds a <doc>/tables/comparison.csv"):
+    with pytest.raises(AbglibValueError, match="'.*empty' and '.*empty' hold no <doc>/tables"):
         diff_folders(tmp_path / "empty", tmp_path / "empty")
+    # a folder above the version folders (reports/) holds no table of its own: refused, not
+    # read as a version without documents (every row of the other reported added)
+    with pytest.raises(AbglibValueError) as exc:
+        diff_folders(good.parent, good)
+    assert str(exc.value).startswith(f"{str(good.parent)!r} holds no <doc>/tables/comparison.csv")
 
 
 def test_previous_version_is_the_highest_below(tmp_path):
@@ -237,6 +242,9 @@ def test_cli_prints_counts_and_writes_both_files(two, tmp_path, capsys):
     assert '<a href="../reports/v0.2.0/d/index.html">' in page
     assert main(["changes", str(old), str(tmp_path / "nope")]) == 2
     assert "must be a directory" in capsys.readouterr().err
+    assert main(["changes", str(old.parent), str(new)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("abglib changes: ") and "holds no <doc>/tables/comparison.csv" in err
 
 
 def test_real_v020_to_v030_lists_the_replication_layer_verdict_changes():

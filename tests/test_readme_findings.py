@@ -73,3 +73,41 @@ def test_the_readme_holds_the_findings_of_the_committed_release():
     assert update_readme(
         REPO / "README.md", REPO / "docs" / "readme_findings.md", release, check=True
     ), "README.md findings are stale: run `abglib findings`"
+
+
+def test_the_release_placeholder_names_the_release_folder(tmp_path):
+    rel = _release(tmp_path / "v9.8.7")
+    assert render_findings("From {{release}}: {{ release }}.", rel) == "From v9.8.7: v9.8.7."
+
+
+@pytest.mark.parametrize(
+    "case, message",
+    [
+        ("release", "the release folder .* does not exist"),
+        ("readme", "no README file"),
+        ("template", "no template file"),
+        ("placeholder", "0 rows with item = 'nope', need one"),
+    ],
+)
+def test_the_command_names_a_bad_input_without_a_traceback(tmp_path, capsys, case, message):
+    """``abglib findings`` with a missing folder or file, or a template the release cannot
+    fill: one line naming it on stderr, exit 2 (it printed a traceback)."""
+    import re
+
+    rel = _release(tmp_path / "rel")
+    readme, template = tmp_path / "README.md", tmp_path / "findings.md"
+    readme.write_text(f"{START}\n{END}\n")
+    template.write_text("{{huang/comparison | item=eq 14 | reproduced}}\n")
+    if case == "release":
+        rel = tmp_path / "absent"
+    elif case == "readme":
+        readme = tmp_path / "absent.md"
+    elif case == "template":
+        template = tmp_path / "absent.md"
+    else:
+        template.write_text("{{huang/comparison | item=nope | reproduced}}\n")
+    args = ["findings", "--release", str(rel), "--readme", str(readme), "--template", str(template)]
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("abglib findings: ") and re.search(message, err), err
+    assert "Traceback" not in err and err.count("\n") == 1

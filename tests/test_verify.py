@@ -131,3 +131,32 @@ def test_the_report_counts_what_it_leaves_out(tmp_path):
 
     rep = DocReport("doc", differences=[Difference("t", i, "c", "1", "2") for i in range(7)])
     assert "... and 2 more" in format_report([rep], limit=5)
+
+
+@pytest.mark.parametrize(
+    "argv, named",
+    [
+        (["verify", "--limit", "-3"], "argument --limit: must be an integer >= 0, got -3"),
+        (["verify", "--limit", "two"], "argument --limit: must be an integer >= 0, got 'two'"),
+        (["precision", "--runs", "1"], "argument --runs: must be an integer >= 2, got 1"),
+        (["precision", "--cores", "0"], "argument --cores: must be an integer >= 1, got 0"),
+    ],
+)
+def test_an_out_of_range_count_is_refused_before_anything_runs(argv, named, capsys):
+    """A negative ``--limit`` printed "... and 6 more" under identical documents; ``--runs
+    1`` reached the derivation and ended in a traceback. argparse refuses both, by name."""
+    with pytest.raises(SystemExit) as exc:
+        main(argv)
+    assert exc.value.code == 2
+    err = capsys.readouterr().err
+    assert named in err and "Traceback" not in err
+
+
+def test_help_names_every_command_in_plain_text(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["--help"])
+    assert exc.value.code == 0
+    out = capsys.readouterr().out
+    for command in ("verify", "release", "changes", "precision", "findings"):
+        assert command in out
+    assert "``" not in out  # no reStructuredText markup

@@ -335,9 +335,14 @@ def diff_folders(old, new) -> Changes:
     """The changes between two version folders (see the module docstring)."""
     old, new = Path(old), Path(new)
     a, b = comparison_tables(old), comparison_tables(new)
-    if not a and not b:
+    empty = [repr(str(f)) for f, t in ((old, a), (new, b)) if not t]
+    if empty:
+        # a folder without a single document's table is not a version folder (its parent,
+        # say): every row of the other would be reported added or removed
         raise AbglibValueError(
-            f"neither {str(old)!r} nor {str(new)!r} holds a <doc>/tables/comparison.csv"
+            f"{' and '.join(empty)} {'holds' if len(empty) == 1 else 'hold'} no "
+            "<doc>/tables/comparison.csv: give two version folders, e.g. reports/v0.3.0 "
+            "or a build's results/reports/v<version>"
         )
     return diff_tables(a, b, _label(old), _label(new))
 

@@ -1,4 +1,4 @@
-"""The ``abglib`` command: ``verify``, ``release``, ``changes`` and ``findings``.
+"""The ``abglib`` command: ``verify``, ``release``, ``changes``, ``precision`` and ``findings``.
 
 ``abglib verify``
     Compare the tables of a build (default ``results/reports/v<version>``, what
@@ -41,15 +41,38 @@ from .verify import compare_folders, format_report
 
 BUILD = Path("results") / "reports" / f"v{__version__}"
 RELEASE = Path("reports") / f"v{__version__}"
+#: What ``abglib --help`` says first (the module docstring's first line, without its markup).
+DESCRIPTION = (
+    "abglib's command: verify a build against a release, cut a release, list the changes "
+    "between two versions, derive the tables' precision, rewrite the README's findings."
+)
+
+
+def _at_least(low: int):
+    """An argparse ``type``: an integer ``>= low``; anything else is refused by name."""
+
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"must be an integer >= {low}, got {text!r}") from None
+        if value < low:
+            raise argparse.ArgumentTypeError(f"must be an integer >= {low}, got {value}")
+        return value
+
+    parse.__name__ = f"integer >= {low}"
+    return parse
 
 
 def _parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="abglib", description=__doc__.split("\n\n")[0])
+    p = argparse.ArgumentParser(prog="abglib", description=DESCRIPTION)
     sub = p.add_subparsers(dest="command", required=True)
     v = sub.add_parser("verify", help="compare a build's tables with a release")
     v.add_argument("build", nargs="?", type=Path, default=BUILD, help=f"default: {BUILD}")
     v.add_argument("--release", type=Path, default=RELEASE, help=f"default: {RELEASE}")
-    v.add_argument("--limit", type=int, default=5, help="differences listed per document")
+    v.add_argument(
+        "--limit", type=_at_least(0), default=5, help="differences listed per document (>= 0)"
+    )
     v.add_argument(
         "--partial",
         action="store_true",
@@ -75,8 +98,10 @@ def _parser() -> argparse.ArgumentParser:
         action="append",
         help="config(s) to build (default: config.yaml and tests/data/config_small.yaml)",
     )
-    pr.add_argument("--runs", type=int, default=3, help="perturbation seeds (default 3)")
-    pr.add_argument("--cores", type=int, default=2)
+    pr.add_argument(
+        "--runs", type=_at_least(2), default=3, help="perturbation seeds, >= 2 (default 3)"
+    )
+    pr.add_argument("--cores", type=_at_least(1), default=2, help="cores (default 2)")
     pr.add_argument("--check", action="store_true", help="exit 1 if the table would change")
     f = sub.add_parser("findings", help="rewrite the README's findings from a release")
     f.add_argument("--release", type=Path, default=RELEASE, help=f"default: {RELEASE}")
@@ -152,9 +177,14 @@ def release(build: Path, to: Path, force: bool = False) -> int:
 
 
 def findings(release: Path, readme: Path, template: Path, check: bool) -> int:
+    from .._checks import AbglibValueError
     from .readme_findings import update_readme
 
-    same = update_readme(readme, template, release, check=check)
+    try:
+        same = update_readme(readme, template, release, check=check)
+    except AbglibValueError as exc:
+        print(f"abglib {exc}", file=sys.stderr)
+        return 2
     if check and not same:
         print(f"{readme}: findings differ from {release}; run `abglib findings`", file=sys.stderr)
         return 1
@@ -188,6 +218,10 @@ def precision(configfiles, runs: int, cores: int, check: bool) -> int:
 
     repo = Path(prec.__file__).resolve().parents[2]
     configs = configfiles or [repo / "config.yaml", repo / "tests" / "data" / "config_small.yaml"]
+    missing = [str(c) for c in configs if not Path(c).is_file()]
+    if missing:
+        print(f"abglib precision: no config file {', '.join(missing)}", file=sys.stderr)
+        return 2
     specs, derivations = prec.derive_precision(configs, runs, cores)
     moved = [t for d in derivations for t in d.text_differences]
     problems = [p for d in derivations for p in d.problems]

@@ -3,10 +3,11 @@
 ``docs/readme_findings.md`` is a template: prose with placeholders
 ``{{<doc>/<table> | <column>=<value>[ & <column>=<value>...] | <column> | <format>}}``
 (the conditions select one row; format optional, a Python format spec such as ``.3g``),
-resolved against ``reports/v<version>/<doc>/tables/<table>.csv``, and ``{{scorecard}}``,
-the scorecard as a Markdown table. The rendered text goes between the
-``<!-- findings:start -->`` and ``<!-- findings:end -->`` markers of README.md
-(``abglib findings``); a test checks that the README holds exactly what the committed
+resolved against ``reports/v<version>/<doc>/tables/<table>.csv``; ``{{scorecard}}``, the
+scorecard as a Markdown table; and ``{{release}}``, the release folder's name
+(``v0.4.3``), so that the text says which release its numbers are from. The rendered
+text goes between the ``<!-- findings:start -->`` and ``<!-- findings:end -->`` markers
+of README.md (``abglib findings``); a test checks that the README holds exactly what the committed
 release renders to.
 """
 
@@ -48,6 +49,8 @@ def _scorecard(release: Path) -> str:
 def _resolve(expr: str, release: Path) -> str:
     if expr == "scorecard":
         return _scorecard(release)
+    if expr == "release":
+        return release.resolve().name
     parts = [p.strip() for p in expr.split("|")]
     if len(parts) not in (3, 4) or "=" not in parts[1]:
         raise AbglibValueError(
@@ -82,6 +85,8 @@ def _resolve(expr: str, release: Path) -> str:
 def render_findings(template: str, release) -> str:
     """The template with every placeholder replaced by its value in ``release``."""
     release = Path(release)
+    if not release.is_dir():
+        raise AbglibValueError(f"findings: the release folder {release} does not exist")
     return _PLACEHOLDER.sub(lambda m: _resolve(m.group(1), release), template)
 
 
@@ -90,12 +95,16 @@ def update_readme(readme, template, release, check: bool = False) -> bool:
 
     With ``check`` nothing is written. Returns whether the README already held them.
     """
-    readme, text = Path(readme), Path(readme).read_text(encoding="utf-8")
+    readme, template = Path(readme), Path(template)
+    for what, path in (("README", readme), ("template", template)):
+        if not path.is_file():
+            raise AbglibValueError(f"findings: no {what} file {path}")
+    text = readme.read_text(encoding="utf-8")
     if START not in text or END not in text:
         raise AbglibValueError(f"{readme} lacks the markers {START} and {END}")
     head, rest = text.split(START, 1)
     _, tail = rest.split(END, 1)
-    body = render_findings(Path(template).read_text(encoding="utf-8"), release)
+    body = render_findings(template.read_text(encoding="utf-8"), release)
     new = f"{head}{START}\n{body.strip()}\n{END}{tail}"
     same = new == text
     if not same and not check:
