@@ -25,6 +25,7 @@
 #
 # Usage: tools/version-matrix.sh [lowest] [newest]   (default: both, then the comparison;
 #        the comparison runs whenever both sessions' builds exist in MATRIX_DIR)
+#        tools/version-matrix.sh -h | --help           (this usage, in short)
 # Env:   MATRIX_DIR   where the sessions live (default: a new ${TMPDIR:-/tmp}/abglib-matrix.*);
 #                     each session's logs and installed versions are kept there
 #        UV           the uv binary (default: uv on PATH, else pip-installed into MATRIX_DIR)
@@ -33,6 +34,30 @@
 # A failed step is reported with the tail of its log and the rest still runs; the script exits
 # non-zero at the end if any step failed.
 set -euo pipefail
+
+usage() {
+    cat <<'USAGE'
+Usage: tools/version-matrix.sh [lowest] [newest]
+Runs each named session (default: both) in a fresh virtual environment: the small pipeline
+and the unit tests. When both sessions' builds exist in MATRIX_DIR, it then checks that their
+verdicts are identical and that their tables pass abglib verify against each other.
+  lowest        Python 3.11, the lowest version of every direct dependency
+  newest        Python 3.13, the newest versions
+Environment:
+  MATRIX_DIR    where the sessions live (default: a new ${TMPDIR:-/tmp}/abglib-matrix.*)
+  UV            the uv binary (default: uv on PATH, else pip-installed into MATRIX_DIR)
+  UV_CACHE_DIR  uv's cache (default: ~/.cache/abglib-uv)
+  PY311, PY313  the interpreters (default: the newest pyenv 3.11.x / 3.13.x)
+USAGE
+}
+# the arguments are checked before anything is created or installed
+for s in "$@"; do
+    case "$s" in
+        lowest | newest) ;;
+        -h | --help) usage; exit 0 ;;
+        *) echo "!! unknown session '$s' (lowest or newest)" >&2; usage >&2; exit 1 ;;
+    esac
+done
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 matrix="${MATRIX_DIR:-$(mktemp -d "${TMPDIR:-/tmp}/abglib-matrix.XXXXXX")}"
