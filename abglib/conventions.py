@@ -64,7 +64,7 @@ def to_huang(gains: Gains) -> tuple:
 
 
 def from_huang(alpha_h, beta_h, gamma_h=0.0) -> Gains:
-    r"""Gains given in Huang et al.'s convention (seed 002) to canonical :class:`Gains`.
+    r"""Gains given in Huang et al.'s convention (seed 002) to canonical :class:`~abglib.Gains`.
 
     Parameters
     ----------
@@ -130,7 +130,7 @@ def to_filterpy(gains: Gains) -> tuple:
 
 
 def from_filterpy(g, h, k=0.0) -> Gains:
-    r"""FilterPy's ``(g, h, k)`` to canonical :class:`Gains`.
+    r"""FilterPy's ``(g, h, k)`` to canonical :class:`~abglib.Gains`.
 
     Parameters
     ----------

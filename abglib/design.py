@@ -1,4 +1,4 @@
-r"""Gain-design rules of the sources: each function returns canonical :class:`Gains`.
+r"""Gain-design rules of the sources: each function returns canonical :class:`~abglib.Gains`.
 
 Every rule cites the equation it implements; conventions other than the canonical one
 (seed 000, eqs 1-6) are converted in :mod:`abglib.conventions` only.
@@ -396,7 +396,8 @@ def benedict_bordner(alpha) -> Gains:
     return _gains(a, a**2 / (2.0 - a))
 
 
-#: Method M1 of seed 001 is the Benedict-Bordner rule (seed 001, eqs 23a-b).
+# Method M1 of seed 001 is the Benedict-Bordner rule (seed 001, eqs 23a-b): the same
+# function under the paper's name (listed with the functions, not as a constant)
 m1 = benedict_bordner
 
 
@@ -818,9 +819,9 @@ def huang_for_enbw(bn_hz, dt, rule="type1", order=2) -> Gains:
 
 
 # --------------------------------------------------------------------------- Bendix
-#: Seed 003, A. I. Sinsky's memo "Expected Smoothing of Alpha-Beta Filter in TCAS
-#: Simulation", table "Update Rate Periods (sec) | Alpha | Beta | ...": period (s) ->
-#: (alpha, beta), printed to three decimals.
+#: The gains of the Bendix memo (seed 003), period (s) -> (alpha, beta), printed to three
+#: decimals: A. I. Sinsky's memo "Expected Smoothing of Alpha-Beta Filter in TCAS
+#: Simulation", table "Update Rate Periods (sec) | Alpha | Beta | ...".
 BENDIX_MEMO = {
     1: (0.250, 0.066),
     2: (0.370, 0.175),
@@ -832,9 +833,9 @@ BENDIX_MEMO = {
     8: (0.665, 0.910),
 }
 
-#: Seed 003, the 48 plot captions "... ALPHA= 0.25 BETA= 0.06 T= 1.00 SECONDS ...":
-#: period (s) -> (alpha, beta), printed to two decimals (the memo values truncated,
-#: not rounded: e.g. beta 0.066 -> 0.06, alpha 0.465 -> 0.46).
+#: The gains of the Bendix plot captions (seed 003), period (s) -> (alpha, beta), printed
+#: to two decimals: the memo's values truncated, not rounded (beta 0.066 -> 0.06, alpha
+#: 0.465 -> 0.46), in the 48 captions "... ALPHA= 0.25 BETA= 0.06 T= 1.00 SECONDS ...".
 BENDIX_CAPTIONS = {
     1: (0.25, 0.06),
     2: (0.37, 0.17),

@@ -60,6 +60,8 @@ class TrackResult:
         (seed 000, eqs 1-3). ``a_smooth`` is identically zero for an alpha-beta tracker
         started from zero acceleration.
 
+    Notes
+    -----
     An output not requested through ``track(..., outputs=...)`` is ``None``.
 
     References

@@ -131,7 +131,7 @@ class Gains:
 
 
 def require_gains(gains, name: str = "gains") -> Gains:
-    """Return ``gains`` if it is a :class:`Gains`, else raise naming what was passed."""
+    """Return ``gains`` if it is a :class:`~abglib.Gains`, else raise naming what was passed."""
     if not isinstance(gains, Gains):
         raise AbglibValueError(f"{name} must be an abglib.Gains, got {type(gains).__name__}")
     return gains

@@ -19,6 +19,9 @@ Modules (one concept each; every public name is re-exported here):
     steady-state lag errors (seed 002)
 ``_enbw``
     equivalent noise bandwidth (seed 002 eq 8, one-sided) and a direct numeric route
+``_statespace``
+    the state-space form of a gain set (:func:`state_space`), where every numeric route
+    starts
 ``_kalman``
     the steady-state Kalman filter of a polynomial target model: process noise and the
     discrete algebraic Riccati equation (the route of
@@ -32,6 +35,7 @@ from ._enbw import *  # noqa: F403
 from ._features import *  # noqa: F403
 from ._kalman import *  # noqa: F403
 from ._stability import *  # noqa: F403
+from ._statespace import *  # noqa: F403
 from ._transfer import *  # noqa: F403
 from ._transient import *  # noqa: F403
 from ._variance import *  # noqa: F403

@@ -1,9 +1,9 @@
 """The benchmark matrix: every tracker variant on every dataset scenario.
 
 One *cell* is a (variant, scenario) pair: :func:`run_cell` designs the variant's gains
-for the scenario's sample interval (:mod:`abglib.variants`), runs it on the scenario's
-Monte Carlo runs (an :class:`abglib.datasets.Dataset`) and scores it
-(:func:`abglib.metrics.evaluate_cell`); :func:`check_cell` fails a fixed-gain cell on
+for the scenario's sample interval (:mod:`abglib.bench.variants`), runs it on the scenario's
+Monte Carlo runs (an :class:`abglib.bench.datasets.Dataset`) and scores it
+(:func:`abglib.bench.metrics.evaluate_cell`); :func:`check_cell` fails a fixed-gain cell on
 white noise whose measured VRF is outside its simultaneous confidence interval.
 :func:`league_table` ranks the variants per scenario and :func:`tradeoff_table` gives
 the noise-versus-lag points of each design family.
@@ -85,15 +85,15 @@ def run_cell(
 
     Parameters
     ----------
-    dataset : abglib.datasets.Dataset
+    dataset : abglib.bench.datasets.Dataset
         Truth and measurements ``(runs, n)`` per coordinate, ``dt``, ``noise``
         (``{"sigma", "colour", "rho"}``).
     spec : mapping
-        The variant's config entry (:func:`abglib.variants.variant_rule`).
+        The variant's config entry (:func:`abglib.bench.variants.variant_rule`).
     variant : str
         Its name.
     burn_in, init, ci_level, chunk_runs, outputs
-        As :func:`abglib.metrics.evaluate_cell`. ``init="three_point"`` needs gamma > 0,
+        As :func:`abglib.bench.metrics.evaluate_cell`. ``init="three_point"`` needs gamma > 0,
         so alpha-beta variants fall back to ``"two_point"``.
     """
     import pandas as pd
@@ -151,9 +151,9 @@ def run_cell(
 
 
 def check_cell(cell: pd.DataFrame, threshold: float, colours: Sequence[str] = ("white",)) -> None:
-    """Raise :class:`abglib.metrics.VRFMismatchError` if a fixed-gain VRF check fails.
+    """Raise :class:`abglib.bench.metrics.VRFMismatchError` if a fixed-gain VRF check fails.
 
-    ``threshold`` is the simultaneous ``|t|`` bound (:func:`abglib.metrics.fail_threshold`);
+    ``threshold`` is the simultaneous ``|t|`` bound (:func:`abglib.bench.metrics.fail_threshold`);
     only cells whose noise colour is in ``colours`` are checked (white noise: exact theory).
     """
     colour = str(cell["noise_colour"].iloc[0])
@@ -246,11 +246,11 @@ def tradeoff_sweep(
 
     Parameters
     ----------
-    datasets : sequence of abglib.datasets.Dataset
+    datasets : sequence of abglib.bench.datasets.Dataset
         The scenarios of the trade-off figure.
     families : mapping
         ``label -> {rule: ..., <fixed parameters>, sweep: {<parameter>: [values]}}``; each
-        value of the swept parameter is one variant (:mod:`abglib.variants`).
+        value of the swept parameter is one variant (:mod:`abglib.bench.variants`).
     burn_in, init
         As :func:`run_cell`.
 

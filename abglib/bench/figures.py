@@ -91,9 +91,9 @@ def benchmark_heatmap(league: pd.DataFrame, metric: str = "rmse_x_smooth", title
 def tradeoff_figure(curves: pd.DataFrame, points: pd.DataFrame, scenarios, title: str = ""):
     """Noise versus lag of the smoothed position per design family, one panel per scenario.
 
-    ``curves``: :func:`abglib.benchmark.tradeoff_sweep` (each family swept over its
+    ``curves``: :func:`abglib.bench.benchmark.tradeoff_sweep` (each family swept over its
     parameter, joined in order of the parameter); ``points``:
-    :func:`abglib.benchmark.tradeoff_table` (the configured variants, one marker shape
+    :func:`abglib.bench.benchmark.tradeoff_table` (the configured variants, one marker shape
     each, in the colour of their family, named in the legend: no labels on the data).
     Both axes in metres, log scale; the legend fills the panel left free, or sits under
     the panels.

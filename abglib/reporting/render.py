@@ -307,7 +307,7 @@ def write_index(
     documents : sequence of mapping
         ``{"doc", "title", "href", "headline"}`` per report, ``href`` relative to the index.
     provenance : mapping
-        From :func:`abglib.provenance.collect`.
+        From :func:`abglib.reporting.provenance.collect`.
     extras : sequence of mapping
         ``{"doc", "title", "href", "headline"}`` per report that replicates no source
         document (e.g. the benchmark matrix); listed after the documents, without verdicts.

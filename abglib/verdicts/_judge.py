@@ -52,7 +52,7 @@ class Reading:
 @dataclass(frozen=True)
 class Alternative:
     """A :class:`Reading` tied to the published key it may explain (``comparison.csv``
-    inputs of :func:`abglib.reporting.compare.build_comparison`)."""
+    inputs of :func:`abglib.replications.compare.build_comparison`)."""
 
     key: str
     alternative: str

@@ -1,7 +1,7 @@
 """Printed numbers: exact parsing, their precision, tolerances and deterministic formatting.
 
 The one home of the number rules every verdict uses (``shared/CONTRACTS.md`` section 3:
-"half a unit in the last printed digit"); :mod:`abglib.reporting.compare` re-exports them.
+"half a unit in the last printed digit"); :mod:`abglib.replications.compare` re-exports them.
 """
 
 from __future__ import annotations
