@@ -820,8 +820,8 @@ def huang_for_enbw(bn_hz, dt, rule="type1", order=2) -> Gains:
 
 # --------------------------------------------------------------------------- Bendix
 #: The gains of the Bendix memo (seed 003), period (s) -> (alpha, beta), printed to three
-#: decimals: A. I. Sinsky's memo "Expected Smoothing of Alpha-Beta Filter in TCAS
-#: Simulation", table "Update Rate Periods (sec) | Alpha | Beta | ...".
+#: decimals. The memo is A. I. Sinsky's "Expected Smoothing of Alpha-Beta Filter in TCAS
+#: Simulation", its table "Update Rate Periods (sec) | Alpha | Beta | ...".
 BENDIX_MEMO = {
     1: (0.250, 0.066),
     2: (0.370, 0.175),
@@ -834,8 +834,8 @@ BENDIX_MEMO = {
 }
 
 #: The gains of the Bendix plot captions (seed 003), period (s) -> (alpha, beta), printed
-#: to two decimals: the memo's values truncated, not rounded (beta 0.066 -> 0.06, alpha
-#: 0.465 -> 0.46), in the 48 captions "... ALPHA= 0.25 BETA= 0.06 T= 1.00 SECONDS ...".
+#: to two decimals. They are the memo's values truncated, not rounded (beta 0.066 -> 0.06,
+#: alpha 0.465 -> 0.46), in the 48 captions "... ALPHA= 0.25 BETA= 0.06 T= 1.00 SECONDS ...".
 BENDIX_CAPTIONS = {
     1: (0.25, 0.06),
     2: (0.37, 0.17),
