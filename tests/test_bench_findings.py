@@ -65,5 +65,5 @@ def test_peer_disagreements():
         }
     )
     d = findings.peer_disagreements(peers).set_index("peer")
-    assert d.loc["F"].tolist() == [4, 3, 2, 1, "vrf, batch, bb"]
+    assert d.loc["F"].tolist() == [4, 3, 2, 1, "vrf, batch, bb", "bb"]
     assert d.loc["S", "disagreements"] == 0

@@ -107,7 +107,8 @@ def tradeoff_extremes(tradeoff: pd.DataFrame, output: str = "x_smooth") -> pd.Da
 def peer_disagreements(peers: pd.DataFrame) -> pd.DataFrame:
     """Per peer: comparisons, disagreements, how many of those the independent routes
     settle for abglib (``supports == "abglib"``) and how many compare different rules
-    (``"not comparable"``), with the functions concerned."""
+    (``"not comparable"``), with the functions concerned: ``functions`` names those of every
+    disagreement, ``not_comparable_functions`` only those of the ``"not comparable"`` rows."""
     agree = peers["agree"].astype(str).str.lower() == "true"
     rows = []
     for peer, g in peers.groupby("peer", sort=False):
@@ -120,6 +121,9 @@ def peer_disagreements(peers: pd.DataFrame) -> pd.DataFrame:
                 "settled_for_abglib": int((bad["supports"] == "abglib").sum()),
                 "not_comparable": int((bad["supports"] == "not comparable").sum()),
                 "functions": ", ".join(dict.fromkeys(bad["function"].astype(str))),
+                "not_comparable_functions": ", ".join(
+                    dict.fromkeys(bad["function"][bad["supports"] == "not comparable"].astype(str))
+                ),
             }
         )
     return pd.DataFrame(rows)

@@ -129,12 +129,56 @@ def mc_means(noise):
 
 
 # %%
+# The section 7 conclusion "M5, then M4, then M3", as its rows of comparison.csv judge it:
+# on the printed Tables 1-2 (one row per table and coordinate) and on the reconstruction
+# (one row per noise and coordinate, at the configured settings).
+concl = comparison[comparison["item"].str.startswith("Section 7 conclusion")].copy()
+concl["holds"] = concl["reproduced"].astype(str).str.lower() == "true"
+concl["coord"] = concl["item"].str.extract(r", ([XY])[,:]", expand=False)
+concl_printed = concl[concl["item"].str.contains("on the printed Table")]
+concl_rec = concl[~concl["item"].str.contains("on the printed Table")]
+
+
+def _in(coords):
+    return " and ".join(coords) if coords else "neither coordinate"
+
+
+def printed_conclusion():
+    """Where the conclusion holds on the printed Tables 1-2, by coordinate."""
+    by = concl_printed.groupby("coord")["holds"]
+    every = [c for c, h in by if h.all()]
+    none = [c for c, h in by if not h.any()]
+    some = [c for c, h in by if h.any() and not h.all()]
+    text = f"holds in {_in(every)}"
+    if none:
+        text += f" but not in {_in(none)}"
+    if some:
+        text += f" (in {_in(some)} on only one of the two tables)"
+    return text
+
+
+def reconstruction_conclusion():
+    """In how many noise/coordinate cells it holds on the reconstruction."""
+    n_fragile = int((concl_rec["robust"] == "false").sum())
+    text = (
+        f"in {int(concl_rec['holds'].sum())} of {len(concl_rec)} noise/coordinate cells at "
+        "the configured settings"
+    )
+    if n_fragile:
+        text += (
+            f" ({n_fragile} of these {len(concl_rec)} verdicts change within the plausible "
+            "range of the settings the paper does not give)"
+        )
+    return text
+
+
 R.abstract(
-    """The trajectories of Al-Wagih and Abdulla are not published, so the absolute RMSEs of
+    f"""The trajectories of Al-Wagih and Abdulla are not published, so the absolute RMSEs of
 Tables 1–2 cannot be reproduced; rankings, signs and t-tests are judged twice, on the printed
 tables and on a reconstruction. The printed tables contradict the paper (Tables 3–6 are
-arithmetic on Tables 1–2, yet many entries fall outside what rounding allows), and the
-conclusion "M5, then M4, then M3" holds in X but not in Y."""
+arithmetic on Tables 1–2, yet many entries fall outside what rounding allows). The
+conclusion "M5, then M4, then M3" {printed_conclusion()} on the printed Tables 1–2, and
+holds on the reconstruction {reconstruction_conclusion()}."""
 )
 
 # %% [markdown]
@@ -202,12 +246,14 @@ reconstruction, {n_concl_fragile} flip within the plausible α₀ and window ran
 section 8). (2) Of the {len(tt_real)} paired t-tests on one reconstructed realisation,
 {int((tt_real["p_value"] < 0.001).sum())} reach p < 0.001; on the printed Tables 1–2
 themselves {int((tt_print["p_value"] < 0.001).sum())} of {len(tt_print)} do (five pairs each).
-(3) The paper's Tables 3–6 do not all follow from its Tables 1–2: e.g. M1 − M3 in X: printed
-{printed("Table 3, relative to M1, X, M3")}, {g(c3["central"].iloc[0], 5)} from Table 1; M2 − M3 in
-Y: printed {printed("Table 3, relative to M2, Y, M3")}, {g(c3b["central"].iloc[0], 5)} from Table 1
-(so even the sign §7 of the paper states fails on the printed Table 1); Table 5, experiment 4, Y, M4:
-printed {printed("Table 5, experiment 4, Y, M4")}, {g(c5["central"].iloc[0], 5)} from Table 1; see
-*Consistency of the printed tables*.
+(3) The paper's Tables 3–6 do not all follow from its Tables 1–2: e.g. Table 3, M1 − M3 in
+X: printed {printed("Table 3, relative to M1, X, M3")} against {g(c3["central"].iloc[0], 5)}
+recomputed from the printed Table 1; Table 3, M2 − M3 in Y: printed
+{printed("Table 3, relative to M2, Y, M3")} against {g(c3b["central"].iloc[0], 5)} recomputed
+from the printed Table 1 (so even the sign §7 of the paper states fails on the printed
+Table 1); Table 5, experiment 4, Y, M4 (% change relative to M1): printed
+{printed("Table 5, experiment 4, Y, M4")} against {g(c5["central"].iloc[0], 5)} recomputed
+from the printed Table 1; see *Consistency of the printed tables*.
 
 **Beyond the paper.** M5's rule picks the prediction closest to the measurement it is
 predicting, so it looks at the answer. A causal M5 — choosing, before the measurement
@@ -293,12 +339,25 @@ display(
 )
 
 # %%
-R.figure("fig5_tracks", 'Al-Wagih Figure 5 recomputed on the reconstructed trajectory (X): the track and the estimates of the five methods.')
-R.figure("fig6_tracks", 'Al-Wagih Figure 6 recomputed (Y): the track and the estimates of the five methods.')
+for fig, num, noise in (("fig5_tracks", 5, "white"), ("fig6_tracks", 6, "coloured")):
+    R.figure(
+        fig,
+        f"Al-Wagih Figure {num} (tracking measurements corrupted by {noise} noise) recomputed "
+        f"on one reconstructed experiment with {noise} noise (realisation {run}; the "
+        "experiment is named in the title): the actual, measured and predicted tracks of the "
+        "five methods in the X-Y plane (left) and their X and Y prediction errors against "
+        "time (right).",
+    )
 
 # %%
-R.figure("fig7_rmse", 'Al-Wagih Figure 7 recomputed: RMSE of each method over the Monte Carlo runs (X).')
-R.figure("fig8_rmse", 'Al-Wagih Figure 8 recomputed: RMSE of each method over the Monte Carlo runs (Y).')
+for fig, num, noise, table in (("fig7_rmse", 7, "white", 1), ("fig8_rmse", 8, "coloured", 2)):
+    R.figure(
+        fig,
+        f"Al-Wagih Figure {num} (RMSE of the 5 methods, {noise} noise) recomputed: RMSE of "
+        f"each method per experiment, X coordinate (left) and Y coordinate (right); bars are "
+        f"the Monte Carlo means with their {100 * float(settings['confidence']):g} % confidence "
+        f"intervals, dots the single realisation of Table {table}.",
+    )
 
 # %% [markdown]
 # ## 3. Tables 3–4 and the paired t-test of §7
@@ -434,7 +493,12 @@ R.table(
 # %% [markdown]
 # ## 9. Every published number and claim
 #
-# The full `comparison.csv` (CONTRACTS §3). Tables 1–2: `not_reproducible` (the note gives
+# The full `comparison.csv`: one row per published number or claim, the printed value
+# (`published`, empty for a qualitative claim) next to abglib's (`reproduced`), the verdict
+# (`match` within the row's `tolerance`, `explained`, `mismatch` or
+# `not_reproducible`) and a note for every verdict but `match`; the columns are described in
+# the project's guide *Reading a report and the comparison tables* (`docs/reading-reports.md`,
+# published with these reports). Tables 1–2: `not_reproducible` (the note gives
 # the reconstruction's realisation and Monte Carlo values); Tables 3–6: recomputed from the
 # printed Tables 1–2; claims: on the printed tables or on the reconstruction (section 5).
 

@@ -33,10 +33,11 @@
 #
 # **Maxima under quantisation are medians over object phases.** The measurements are
 # rounded to the resolution, which makes the closed loop with Kalman estimation chaotic: a
-# one-ulp change moves one run's maximum |e| by up to a quarter
-# (`shared/notes/antenna-reproducibility.md`). Every maximum of chapter 8 and appendix H is
-# therefore the median over an ensemble of object phases z = α sin(ωt + φ_j) (φ_0 = 0 is
-# the printed track); the ensemble size is in the parameter table. The loop itself runs in
+# one-ulp change flips a rounding decision some hundred steps on and then moves one run's
+# maximum |e| by up to a quarter (module `abglib.replications.antenna.ensemble`). Every
+# maximum of chapter 8 and appendix H is therefore the median over an ensemble of object
+# phases z = α sin(ωt + φ_j) (φ_0 = 0 is the printed track); the ensemble size is in the
+# parameter table. The loop itself runs in
 # compiled explicit loops (no BLAS), and its inputs (design matrices, object states) are
 # rounded to 32 mantissa bits (`abglib.replications.antenna.ensemble.snap`, a relative change
 # of about 1e-10): the design matrices differ in their last bits between BLAS kernels, and in

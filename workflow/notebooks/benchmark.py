@@ -113,19 +113,30 @@ for r in disagree.itertuples():
     if r.disagreements == 0:
         peer_lines.append(f"- {r.peer} agrees with abglib in all {r.comparisons} comparisons.")
     else:
+        other_rule = (
+            f", and {r.not_comparable} compare a different rule ({r.not_comparable_functions})"
+            if r.not_comparable
+            else ""
+        )
         peer_lines.append(
             f"- {r.peer} disagrees in {r.disagreements} of {r.comparisons} comparisons: the "
-            f"independent routes side with abglib in {r.settled_for_abglib}, and "
-            f"{r.not_comparable} compare a different rule ({r.functions}; section 8)."
+            f"independent routes side with abglib in {r.settled_for_abglib}{other_rule} "
+            "(section 8)."
         )
 display(Markdown(md_lines + "\n\n" + "\n".join(trade) + "\n\n" + "\n".join(peer_lines)))
 R.abstract(
-    f"Every configured tracker variant on every simulated scenario. Ranked by `{metric}`, "
+    f"Every configured tracker variant on every simulated scenario. Ranked by `{metric}` "
+    "(the non-causal `alwagih_M5` left out), "
     + "; ".join(
         f"{r.family} leads on {r.scenario} by {100 * r.margin:.1f} %" for r in lead.itertuples()
     )
     + f". FilterPy disagrees with abglib in {int(disagree['disagreements'].sum())} comparisons,"
-    f" {int(disagree['settled_for_abglib'].sum())} of them settled for abglib by independent routes."
+    f" {int(disagree['settled_for_abglib'].sum())} of them settled for abglib by independent routes"
+    + (
+        f"; {int(disagree['not_comparable'].sum())} compare a different rule."
+        if int(disagree["not_comparable"].sum())
+        else "."
+    )
 )
 
 # %% [markdown]

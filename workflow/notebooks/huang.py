@@ -46,6 +46,7 @@ released = None  # file names of the tables copied beside the page (None: all)
 notebook = "workflow/notebooks/huang.py"
 
 # %%
+import numpy as np
 import pandas as pd
 from IPython.display import Markdown, display
 
@@ -89,8 +90,9 @@ def md(text):
 
 
 def span(values, fmt=".3g", sep="–"):
-    """``'lo–hi'`` of a series, formatted."""
-    return f"{min(values):{fmt}}{sep}{max(values):{fmt}}"
+    """``'lo–hi'`` of a series, formatted; one value when both ends format alike."""
+    lo, hi = f"{min(values):{fmt}}", f"{max(values):{fmt}}"
+    return lo if lo == hi else f"{lo}{sep}{hi}"
 
 
 abg_printed = routes[(routes["gains"] == "printed") & routes["eq13_as_printed"].notna()]
@@ -376,12 +378,28 @@ printed_runs = metrics[metrics["tracker"].str.endswith("_printed")].sort_values(
 ab2, f5p = (printed_runs[printed_runs["tracker"].str.startswith("ab_")].iloc[i] for i in (0, -1))
 abgp = printed_runs[printed_runs["tracker"].str.startswith("abg_")].iloc[0]
 abg10 = m.loc[abgp["tracker"].removesuffix("_printed")]
+
+
+def printed_row(run):
+    """The Table 1-2 row (its printed, nominal ENBW) whose gains a ``*_printed`` run uses."""
+    kind, rule, _ = run["tracker"].split("_", 2)
+    hit = tab[
+        (tab["cell"].str.startswith(f"{rule}.{kind}."))
+        & np.isclose(tab["alpha_printed"], run["alpha"], rtol=1e-9, atol=0)
+        & np.isclose(tab["beta_printed"], run["beta"], rtol=1e-9, atol=0)
+        & np.isclose(tab["gamma_h_printed"], run["gamma_h"], rtol=1e-9, atol=1e-15)
+    ]
+    assert len(hit) == 1, (run["tracker"], len(hit))
+    return f"{hit['bn_nominal_hz'].iloc[0]:g} Hz row"
+
+
 md(
-    f"""The α-β run at the printed {f5p['enbw_hz']:.3g} Hz gains drifts by {f5p['lag_slope']:.3f} m/s.
-At the printed {ab2['enbw_hz']:.3g} Hz α-β gain the acceleration lag is
+    f"""The α-β run at the gains printed for the {printed_row(f5p)} (true ENBW
+{f5p['enbw_hz']:.3g} Hz) drifts by {f5p['lag_slope']:.3f} m/s. At the α-β gains printed for the
+{printed_row(ab2)} (true ENBW {ab2['enbw_hz']:.3g} Hz) the acceleration lag is
 {rep('Fig 5 text, 111 m'):.1f} m; the simulated intercept is
 {ab2['lag_intercept']:.1f} m and the peak over the run {ab2['peak_lag']:.0f} m. The α-β-γ loop at
-the gains printed for the same row (true ENBW {abgp['enbw_hz']:.0f} Hz) converges in
+the gains printed for the {printed_row(abgp)} (true ENBW {abgp['enbw_hz']:.0f} Hz) converges in
 {abgp['settle_s']:.2f} s but passes so much noise (settled RMS {abgp['rms_settled']:.1f} m) that it
 would be useless at the {sigma_budget:g} m budget; the gains of a true {abg10['enbw_hz']:.3g} Hz settle in
 {abg10['settle_s']:.2f} s to the noise floor ({abg10['rms_settled']:.2f} m). The assumed
@@ -404,17 +422,90 @@ display(verdicts("Fig 5"))
 # %%
 t1lo, t1hi = pair(1)
 t2lo, t2hi = pair(2)
+
+
+def is_lost(run):
+    return str(run["lost"]).strip().lower() == "true"
+
+
+def claim_row(item, quantity):
+    """The one comparison row with this item whose claim contains ``quantity``."""
+    hit = comparison[(comparison["item"] == item) & comparison["quantity"].str.contains(quantity)]
+    assert len(hit) == 1, (item, quantity, len(hit))
+    return hit.iloc[0]
+
+
+def and_list(words):
+    return " and ".join(filter(None, [", ".join(words[:-1]), words[-1]])) if words else ""
+
+
+def run_text(run):
+    loop = "α-β-γ" if run["tracker"].startswith("abg_") else "α-β"
+    gains = (
+        f"gains printed for the {printed_row(run)}, true ENBW {run['enbw_hz']:.3g} Hz"
+        if run["tracker"].endswith("_printed")
+        else f"gains of a true {run['enbw_hz']:.3g} Hz ENBW"
+    )
+    return (
+        f"`{run['tracker']}` ({loop}, {gains}, pole radius {run['pole_radius']:.4f}: largest "
+        f"error {run['peak_err']:.1f} m)"
+    )
+
+
+lost_runs = metrics[metrics.apply(is_lost, axis=1)].sort_values("enbw_hz")
+lost_stable = lost_runs[lost_runs["pole_radius"] < 1]
+t1_lost4 = claim_row("Fig 6 text, type I at 4 Hz", "loses the track")
+t2_keeps = claim_row("Fig 7 text, type II", "keeps the track")
+figs67_keep = (
+    t1_lost4["verdict"] == "mismatch"
+    and t2_keeps["verdict"] == "match"
+    and str(t1_lost4["robust"]).lower() == str(t2_keeps["robust"]).lower() == "true"
+)
+fig5_2hz = by_item.loc["Fig 5 text, 2 Hz"]
+abg_lo = m.loc[ab2["tracker"].replace("ab_", "abg_", 1).removesuffix("_printed")]
+lo_lost = [name for name, r in (("type I", t1lo), ("type II", t2lo)) if is_lost(r)]
+lo_lost_text = (
+    f"the {and_list(lo_lost)} loop{'s lose' if len(lo_lost) > 1 else ' loses'} the track"
+    if lo_lost
+    else "neither loses the track"
+)
 md(
     f"""Peak noise-free error at {t1lo['enbw_hz']:.3g} / {t1hi['enbw_hz']:.3g} Hz: type I {t1lo['peak_lag']:.2f} /
 {t1hi['peak_lag']:.3f} m, type II {t2lo['peak_lag']:.2f} / {t2hi['peak_lag']:.3f} m. Overshoot: type
 I {t1lo['overshoot']:.3f} / {t1hi['overshoot']:.3f}, type II {t2lo['overshoot']:.3f} /
 {t2hi['overshoot']:.3f}. The largest error with noise at the low ENBW is {t1lo['peak_err']:.1f} m
-(type I) and {t2lo['peak_err']:.1f} m (type II), inside the assumed {gate:.1f} m gate: with loops
-started on the target neither loses the track. A loss at low ENBW does happen with
-*unstable* gains — such as the printed type I sets {', '.join(unstable['cell'])} (pole radius
-{', '.join(f'{r:.3f}' for r in unstable['pole_radius'])}) — the likely origin of the paper's
-observation. Started anywhere inside the gate (section 11), the stable loops keep the
-track."""
+(type I) and {t2lo['peak_err']:.1f} m (type II), against the assumed {gate:.1f} m gate: with loops
+started on the target, {lo_lost_text}.
+
+Of all the simulated runs (section 7), {len(lost_runs)} lose the track at the nominal inputs:
+{and_list([run_text(r) for _, r in lost_runs.iterrows()])}, against the assumed
+{gate:.1f} m gate. """
+    + (
+        f"""{'All' if len(lost_stable) == len(lost_runs) else len(lost_stable)} of them
+{'is' if len(lost_stable) == 1 else 'are'} stable: a
+stable loop loses the track too when its transient (low ENBW) or its noise (high ENBW)
+reaches the gate. """
+        if len(lost_stable)
+        else ""
+    )
+    + f"""*Unstable* gains, such as the printed type I sets {', '.join(unstable['cell'])} (pole
+radius {', '.join(f'{r:.3f}' for r in unstable['pole_radius'])}; not simulated), lose it wherever
+they start, a likely origin of the paper's observation. Started anywhere inside the gate
+(section 11), the {t1lo['enbw_hz']:.3g} Hz loops of Figs 6–7 """
+    + (
+        "keep the track (both rows are robust); "
+        if figs67_keep
+        else "do not always keep the track (see their rows in section 11); "
+    )
+    + (
+        f"whether the {abg_lo['enbw_hz']:.3g} Hz α-β-γ loop of Fig 5 keeps it hinges on the "
+        "inputs the paper does not give (row 'Fig 5 text, 2 Hz', "
+        f"`{fig5_2hz['verdict']}`; section 11)."
+        if str(fig5_2hz["robust"]).lower() == "false"
+        else f"the {abg_lo['enbw_hz']:.3g} Hz α-β-γ loop of Fig 5 "
+        f"{'loses' if is_lost(abg_lo) else 'keeps'} it (row 'Fig 5 text, 2 Hz', "
+        f"`{fig5_2hz['verdict']}`)."
+    )
 )
 R.figure("fig6", "Huang Figure 6 recomputed: type I α-β-γ loops at the two ENBWs of the figure.")
 R.figure("fig7", "Huang Figure 7 recomputed: type II α-β-γ loops at the same ENBWs.")

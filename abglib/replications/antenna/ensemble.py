@@ -2,8 +2,8 @@ r"""Closed loop with quantised measurements over an ensemble of object phases (s
 
 The quantiser of sec. 8.1 (measurements rounded to the resolution) makes the closed loop
 chaotic where the loop without the Kalman measurement term has spectral radius above about
-1.09 (``shared/notes/antenna-reproducibility.md``): a one-ulp difference flips a rounding
-decision some hundred steps on, and one run's maximum |e| or |u| then moves by up to 25 %.
+1.09: a one-ulp difference flips a rounding decision some hundred steps on, and one run's
+maximum |e| or |u| then moves by up to 25 %.
 The maximum of ONE run is therefore not a reproducible number; its distribution is. This
 module runs the loop of :func:`.closedloop.simulate` (modes ``kalman`` and ``abg``) for the
 objects ``z = amplitude sin(omega t + phi_j)``, ``phi_j = 2 pi j / n`` (``j = 0`` is the

@@ -130,7 +130,7 @@ PARAMETER_BASIS = {
     "spread_third": ("Fig. I.16 prints V_w = 0.01, 0.1 and 1: a decade apart", "sec. 8.3"),
     "phases": (
         "not in the text: maxima under quantisation are medians over this many object "
-        "phases (the loop is chaotic, shared/notes/antenna-reproducibility.md)",
+        "phases (the loop is chaotic: a one-ulp change moves one run's maximum by up to 25 %)",
         "sec. 8.1",
     ),
 }

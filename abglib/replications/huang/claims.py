@@ -248,9 +248,10 @@ def _eq7(s: HuangStudy) -> Result:
 @CLAIMS.claim("eq8.enbw")
 def _eq8(s: HuangStudy) -> Result:
     ratio = s.routes["eq8_two_sided"] / s.routes["exact_lyapunov"]
+    lo, hi = f"{ratio.min():.6f}", f"{ratio.max():.6f}"
     return Result(
         bool(np.allclose(ratio, 1.0, rtol=1e-6)),
-        f"the whole-band integral of eq 8 is {ratio.min():.6f}-{ratio.max():.6f} times the "
+        f"the whole-band integral of eq 8 is {lo if lo == hi else f'{lo}-{hi}'} times the "
         "one-sided B_n of eqs 9-14 on every gain set of Tables 1-2: eq 8 as printed is "
         "two-sided; section 2",
     )
@@ -644,9 +645,10 @@ def _fig6_lost(s: HuangStudy) -> Result:
         lost,
         f"type I gains with a true {lo} Hz ENBW (pole radius {a['pole_radius']:.4f}): largest "
         f"error {a['peak_err']:.1f} m {'>' if lost else '<'} {s.gate_m:.1f} m "
-        f"({_start_note(s)}). With the loops started inside the gate a loss needs unstable gains "
-        f"such as the printed type I sets {', '.join(unstable['cell'])} (pole radius "
-        f"{', '.join(f'{r:.3f}' for r in unstable['pole_radius'])}); section 8",
+        f"({_start_note(s)}). Unstable gains, such as the printed type I sets "
+        f"{', '.join(unstable['cell'])} (pole radius "
+        f"{', '.join(f'{r:.3f}' for r in unstable['pole_radius'])}), lose the track wherever "
+        "they start; section 8",
     )
 
 

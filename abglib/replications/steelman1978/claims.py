@@ -127,8 +127,7 @@ def _t5_exact(s: SteelmanStudy, key: str) -> Result:
     v = s.table345_row(_alpha_of(key))["wTmax_exact"]
     return Result(
         v,
-        f"exact peak at ωT = {v:.7f} (two independent routes agree); a near miss is not "
-        f"rescued by guessing how the author rounded; see '{SEC_T345}'",
+        f"exact peak at ωT = {v:.7f} (two independent routes agree); see '{SEC_T345}'",
     )
 
 
@@ -137,8 +136,7 @@ def _t5_approx(s: SteelmanStudy, key: str) -> Result:
     r = s.table345_row(_alpha_of(key))
     return Result(
         r["wTmax_eq54"],
-        f"sqrt(β/2) = {r['wTmax_eq54']:.7f} with β = {r['beta']:.7f} (a truncated or "
-        f"rounded-β hand computation would be a guess, not a demonstration); see '{SEC_T345}'",
+        f"sqrt(β/2) = {r['wTmax_eq54']:.7f} with β = {r['beta']:.7f}; see '{SEC_T345}'",
     )
 
 
