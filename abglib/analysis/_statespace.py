@@ -27,6 +27,11 @@ class StateSpace:
     ``n`` is 3 for every gain set (an alpha-beta tracker has ``gamma = 0``, which leaves
     the acceleration state at zero and adds a pole at z = 1 that is uncontrollable from
     the measurements; :func:`state_space` with ``reduced=True`` drops it).
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 1-6: the tracker's recursion, whose
+    matrices these are; eq 40: the poles, the eigenvalues of ``F``.
     """
 
     def __init__(self, Phi, H, K, F, dt):
@@ -48,6 +53,16 @@ def state_space(gains: Gains, dt: float = 1.0, reduced: bool | None = None) -> S
         Sample interval ``T`` > 0.
     reduced : bool, optional
         Use the 2-state ``[x, v]`` model. Default: True when ``gamma == 0``.
+
+    Returns
+    -------
+    StateSpace
+        ``Phi``, ``H``, ``K`` and the closed-loop ``F = (I - K H) Phi``.
+
+    References
+    ----------
+    Steelman (1978), seed 000 (``steelman1978``), eqs 1-6: the recursion in matrix form;
+    eq 40: the characteristic polynomial, ``det(zI - F)``.
     """
     if gains.shape != ():
         raise AbglibValueError(f"state_space needs scalar gains, got a bank of shape {gains.shape}")
