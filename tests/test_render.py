@@ -367,3 +367,12 @@ def test_report_page_names_neighbours_and_the_rule_behind_each_file():
         "study.csv": ("d_study", "workflow/scripts/s.py"),
     }
     assert report_page(wf, ["d"], {}, "d", files)["nav"] == {}
+
+
+def test_and_list_writes_a_list_into_a_sentence():
+    from abglib.reporting.notebook import and_list
+
+    assert and_list(["eq 25", "eq 26", "eq 31"]) == "eq 25, eq 26 and eq 31"
+    assert and_list(("X", "Y")) == "X and Y"
+    assert and_list(["X"]) == "X" and and_list([]) == ""
+    assert and_list([1, 2]) == "1 and 2"

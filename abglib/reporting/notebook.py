@@ -8,7 +8,8 @@
 - ``R.table(df, caption)`` shows a numbered table (:func:`abglib.reporting.tables.table_html`);
   every other ``display(df)`` goes through the same formatter (installed by ``Report``);
 - ``R.abstract(text)`` gives the report's short summary (markdown), which the page puts
-  under its title and the index page beside its link.
+  under its title and the index page beside its link;
+- :func:`and_list` writes a list into a sentence ("a, b and c").
 
 Figures and tables are referenced relative to the report's own folder, where the report
 rule copies them (``figures/<key>.png``, ``tables/<key>.csv``).
@@ -25,7 +26,17 @@ import pandas as pd
 from ..common.pngmeta import png_description
 from .tables import GROUP_MIN, table_html
 
-__all__ = ["Report"]
+__all__ = ["Report", "and_list"]
+
+
+def and_list(words) -> str:
+    """``'a, b and c'``: the words of a sentence's list (``''`` for none).
+
+    >>> and_list(["eq 25", "eq 26", "eq 31"]), and_list(["X"]), and_list([])
+    ('eq 25, eq 26 and eq 31', 'X', '')
+    """
+    words = [str(w) for w in words]
+    return " and ".join(filter(None, [", ".join(words[:-1]), words[-1]])) if words else ""
 
 
 def _plain(markdown: str) -> str:

@@ -69,7 +69,7 @@ notebook = "workflow/notebooks/alwagih.py"
 import pandas as pd
 from IPython.display import Markdown, display
 
-from abglib.reporting.notebook import Report
+from abglib.reporting.notebook import Report, and_list
 
 R = Report(doc, figures, tables, made_by, notebook, released=released)
 
@@ -140,7 +140,7 @@ concl_rec = concl[~concl["item"].str.contains("on the printed Table")]
 
 
 def _in(coords):
-    return " and ".join(coords) if coords else "neither coordinate"
+    return and_list(coords) or "neither coordinate"
 
 
 def printed_conclusion():

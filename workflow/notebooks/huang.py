@@ -52,7 +52,7 @@ from IPython.display import Markdown, display
 
 from abglib.common.tables import read_table
 from abglib.replications.compare import non_matches
-from abglib.reporting.notebook import Report
+from abglib.reporting.notebook import Report, and_list
 
 R = Report(doc, figures, tables, made_by, notebook, released=released)
 
@@ -433,10 +433,6 @@ def claim_row(item, quantity):
     hit = comparison[(comparison["item"] == item) & comparison["quantity"].str.contains(quantity)]
     assert len(hit) == 1, (item, quantity, len(hit))
     return hit.iloc[0]
-
-
-def and_list(words):
-    return " and ".join(filter(None, [", ".join(words[:-1]), words[-1]])) if words else ""
 
 
 def run_text(run):

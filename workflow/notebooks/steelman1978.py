@@ -53,7 +53,7 @@ from IPython.display import Markdown, display
 
 from abglib.common.tables import read_table
 from abglib.replications.compare import non_matches
-from abglib.reporting.notebook import Report
+from abglib.reporting.notebook import Report, and_list
 
 R = Report(doc, figures, tables, made_by, notebook, released=released)
 
@@ -167,7 +167,7 @@ morrison = comparison[comparison["item"].str.contains("Morrison")]
 wrong = list(morrison[morrison["verdict"] != "match"]["item"].str.extract(r"^(eq \d+)")[0])
 t4_bad = verdicts("Table 4").query("verdict == 'mismatch'")
 t5_bad = verdicts("Table 5").query("verdict == 'mismatch'")
-wrong_eqs = " and ".join(filter(None, [", ".join(wrong[:-1]), wrong[-1]])) if wrong else ""
+wrong_eqs = and_list(wrong)
 say(
     (
         f"Morrison's variance factors as quoted in {wrong_eqs} are those of the one-step "
