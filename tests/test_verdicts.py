@@ -194,6 +194,28 @@ def test_judge_names_the_reading_the_chance_and_the_families_tried():
     assert unbounded["verdict"] == "mismatch" and "not finite" in unbounded["note"]
 
 
+@pytest.mark.parametrize(
+    "printed, reproduced, gives",
+    [
+        # Steelman's Table 5: the reading gives the printed number itself, and the note
+        # must read so (at 4 digits the truncation read "0.1334", the double rounding
+        # "0.1333", neither of them the printed value)
+        ("0.13338", 0.1333861367, "gives 0.13338, which matches"),
+        ("0.13325", 0.1332449653, "gives 0.13325, which matches"),
+        # Al-Wagih's Table 5 prints 4 decimals, the trailing zero among them
+        ("77.0790", 77.07908088, "gives 77.0790, which matches"),
+        # a printed number of fewer digits than NOTE_DIGITS: the reading's value at 4
+        ("2.468", 1.234, "gives 2.468, which matches"),
+    ],
+)
+def test_an_explained_note_writes_the_reading_with_the_printed_digits(
+    printed, reproduced, gives
+):
+    row = judge("d", _pub("k", printed), reproduced, "")
+    assert row["verdict"] == "explained"
+    assert gives in row["note"], row["note"]
+
+
 def test_judge_qualitative_and_missing_rows_are_unchanged():
     assert judge("d", _pub("k", ""), True, "holds")["verdict"] == "match"
     assert judge("d", _pub("k", ""), False, "")["note"] == "qualitative check does not hold"

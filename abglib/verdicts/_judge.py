@@ -9,6 +9,7 @@ the verdict flips across a vague word's declared range (:mod:`abglib.verdicts.va
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -204,9 +205,9 @@ def _assess(doc, row, value, note, alternatives=(), overrides=None, related=None
         if best is not None:
             v = "explained"
             out["reading"], out["chance"] = best.candidate.label, _chance(best.chance)
-            note = _explained_note(best, explanation) + (f". {note}" if note else "")
+            note = _explained_note(best, explanation, row.published) + (f". {note}" if note else "")
         else:
-            note = (note or _unexplained(abs_err, tol)) + _tried_note(explanation)
+            note = (note or _unexplained(abs_err, tol)) + _tried_note(explanation, row.published)
     elif v == "mismatch" and pub is not None:  # an unbounded value: no reading scales it
         note = (note or _unexplained(abs_err, tol)) + (
             "; reading families tried: none applies to a value that is not finite"
@@ -269,10 +270,37 @@ def _chance(c: float) -> float:
     return float(f"{c:.3g}")
 
 
-#: significant digits of a reading's value in a note: enough to see it meet the printed
-#: number, few enough to hold on any machine (a value from a root finder or an optimiser
-#: holds to ~6 digits, and a note is compared letter for letter by ``abglib verify``)
+#: significant digits of a reading's value in a note, at least: enough to see it meet the
+#: printed number, few enough to hold on any machine (a value from a root finder or an
+#: optimiser holds to ~6 digits, and a note is compared letter for letter by
+#: ``abglib verify``)
 NOTE_DIGITS = 4
+#: ... and at most, for a printed number with more digits than :data:`NOTE_DIGITS`
+NOTE_MAX_DIGITS = 6
+
+
+def note_value(x, published: str) -> str:
+    """A reading's value as a note writes it beside the printed number ``published``.
+
+    With :data:`NOTE_DIGITS` significant digits, or with the printed number's own digits
+    (trailing zeros kept, at most :data:`NOTE_MAX_DIGITS`) when it has more, so that a
+    reading that gives the printed number reads as that number: Steelman's Table 5 prints
+    0.13338 for sqrt(β/2) = 0.1333861, truncated; written at 4 digits the truncation would
+    read "0.1334", the rounding it is not.
+
+    Examples
+    --------
+    >>> note_value(0.13338, "0.13338"), note_value(77.079, "77.0790")
+    ('0.13338', '77.0790')
+    >>> note_value(2.1643, "2"), note_value(1452.0, "1452")
+    ('2.164', '1452')
+    """
+    digits = len(parse_printed(published).as_tuple().digits)
+    xf = float(x)
+    if digits <= NOTE_DIGITS or not math.isfinite(xf) or xf == 0.0:
+        return format_number(x, NOTE_DIGITS)
+    text = f"{xf:#.{min(digits, NOTE_MAX_DIGITS)}g}"
+    return text[:-1] if text.endswith(".") else text
 
 
 def _unexplained(abs_err, tol) -> str:
@@ -282,12 +310,12 @@ def _unexplained(abs_err, tol) -> str:
     )
 
 
-def _explained_note(hit, explanation: Explanation) -> str:
+def _explained_note(hit, explanation: Explanation, published: str) -> str:
     c = hit.candidate
     what = c.detail or c.label
     where = f"; see report section '{c.section}'" if c.section else ""
     return (
-        f"reading {c.label} ({what}) gives {format_number(c.value, NOTE_DIGITS)}, which "
+        f"reading {c.label} ({what}) gives {note_value(c.value, published)}, which "
         "matches the "
         f"printed value at chance {format_number(_chance(hit.chance))} (budget "
         f"{format_number(_chance(hit.budget))}){where}; families tried: "
@@ -295,14 +323,14 @@ def _explained_note(hit, explanation: Explanation) -> str:
     )
 
 
-def _tried_note(explanation: Explanation) -> str:
+def _tried_note(explanation: Explanation, published: str) -> str:
     near = [h for h in explanation.hits if not h.accepted]
     text = f"; reading families tried (chance): {explanation.tried_text()}"
     if near:
         h = near[0]
         text += (
             f"; {h.candidate.label} ({h.candidate.detail or h.candidate.label}) gives "
-            f"{format_number(h.candidate.value, NOTE_DIGITS)} but at chance "
+            f"{note_value(h.candidate.value, published)} but at chance "
             f"{format_number(_chance(h.chance))} > budget {format_number(_chance(h.budget))}"
         )
     return text

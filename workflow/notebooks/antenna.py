@@ -134,6 +134,15 @@ def row(key_quantity):
 
 stab_i = stab.set_index("parameter")
 pa = stab_i.loc["p_a"]
+
+
+def window(r, fmt):
+    """``'lo to hi'`` of a stability row; an empty edge is the grid's end, still stable."""
+    lo = f"{r['lower']:{fmt}}" if pd.notna(r["lower"]) else f"below {r['grid_min']:.3g}"
+    hi = f"{r['upper']:{fmt}}" if pd.notna(r["upper"]) else f"above {r['grid_max']:.3g}"
+    return f"{lo} to {hi}"
+
+
 counts = comparison["verdict"].value_counts()
 n_dep = int((comparison["depends_on"] != "").sum())
 n_fragile = int((comparison["robust"] == "false").sum())
@@ -153,7 +162,7 @@ display(Markdown(
     "**What holds on the reconstruction.** Chapter 6's qualitative picture and chapter 8's "
     "(an optimal V_w balancing model and quantisation errors, a larger optimal V_w for a "
     "lower model order, little gain from a higher Q/R with estimation) are reproduced; the "
-    f"stable window of the design p_a is {pa['lower']:.4g} to {pa['upper']:.4g} times the real "
+    f"stable window of the design p_a is {window(pa, '.4g')} times the real "
     f"value (text: {pub.loc['App. H, Fig. I.22', 'published'].iloc[0]} to "
     f"{pub.loc['App. H, Fig. I.22', 'published'].iloc[1]}), the narrowest of all parameters, "
     "as in the text.\n\n"
@@ -288,8 +297,8 @@ R.figure("robustness", 'Robustness of the closed loop to model errors (appendix 
 display(stab)
 pa = stab.set_index("parameter").loc["p_a"]
 display(Markdown(
-    f"Stable window of the design p_a (multiple of the real value): {pa['lower']:.4f} to "
-    f"{pa['upper']:.4f} (text: {pub.loc['App. H, Fig. I.22', 'published'].iloc[0]} to "
+    f"Stable window of the design p_a (multiple of the real value): {window(pa, '.4f')} "
+    f"(text: {pub.loc['App. H, Fig. I.22', 'published'].iloc[0]} to "
     f"{pub.loc['App. H, Fig. I.22', 'published'].iloc[1]}). Where `upper`/`lower` is empty "
     "the loop stays stable to the end of the grid."))
 display(verdicts("App. H"))

@@ -296,8 +296,8 @@ def _eq13_printed(s: HuangStudy) -> Result:
     rel = abg["eq13_as_printed"] / abg["exact_lyapunov"]
     return Result(
         bool(np.allclose(rel, 1.0, rtol=1e-6)),
-        f"read literally, eq 13 gives {rel.min():.3f}-{rel.max():.3f} times the exact ENBW "
-        "on the alpha-beta-gamma sets of Tables 1-2; three corrections are needed "
+        f"read literally, eq 13 gives between {rel.min():.2g} and {rel.max():.2g} times the "
+        "exact ENBW on the alpha-beta-gamma sets of Tables 1-2; three corrections are needed "
         "(section 2)",
     )
 
