@@ -208,9 +208,7 @@ def test_judge_names_the_reading_the_chance_and_the_families_tried():
         ("2.468", 1.234, "gives 2.468, which matches"),
     ],
 )
-def test_an_explained_note_writes_the_reading_with_the_printed_digits(
-    printed, reproduced, gives
-):
+def test_an_explained_note_writes_the_reading_with_the_printed_digits(printed, reproduced, gives):
     row = judge("d", _pub("k", printed), reproduced, "")
     assert row["verdict"] == "explained"
     assert gives in row["note"], row["note"]
