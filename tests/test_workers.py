@@ -175,7 +175,8 @@ def test_each_job_is_timed_on_its_own_process_alone(tmp_path, monkeypatch):
         # the job's loop (0.4 CPU-s) and its fork's own start, well under both jobs' 0.8
         assert 0.4 <= float(rec["cpu_time"]) < 0.6, rec
         assert float(rec["s"]) >= float(rec["cpu_time"]) - 0.02, rec  # one thread
-        assert rec["h:m:s"] == "0:00:00"
+        # the wall time as h:m:s (a busy machine can take over a second for the pair)
+        assert float(rec["s"]) < 60 and rec["h:m:s"] == f"0:00:{int(float(rec['s'])):02d}", rec
         assert 50 < float(rec["max_rss"]) < 4096, rec  # MiB: the fork's, not the tree's
     assert not list((tmp_path / "bench").glob(".*"))  # no part file left
 
