@@ -573,3 +573,84 @@ def test_every_assumed_input_has_a_range_and_every_dependency_is_declared():
     assert used == set(ranges)
     for name, rng in ranges.items():
         assert rng.basis and len(rng.values) >= 2, name
+
+
+# --------------------------------------------------------------------------- notes
+# v0.4.6: the notes say which gain set, which equation and which value they read (a referee
+# reading of v0.4.5); the verdicts are those of v0.4.5.
+def test_eq13_note_gives_printed_and_nominal_ranges_apart(study):
+    abg = study.routes[study.routes["eq13_as_printed"].notna()]
+    rel = abg["eq13_as_printed"] / abg["exact_lyapunov"]
+    note = result(study, "eq13.printed").note
+    parts = {}
+    for gains in ("printed", "nominal"):
+        r = rel[abg["gains"] == gains]
+        parts[gains] = f"between {r.min():.2g} and {r.max():.2g} times"
+        assert parts[gains] in note
+    # the printed sets' range is the report's "17.5-164 times too small"; the nominal one
+    # (the rule's gains of the nominal ENBW) is named apart, after it
+    assert note.index(parts["printed"]) < note.index("printed in Tables 1-2")
+    assert note.index(parts["nominal"]) < note.index("nominal ENBWs")
+    assert 1 / rel[abg["gains"] == "printed"].min() == pytest.approx(164, rel=0.01)
+
+
+@pytest.mark.parametrize("base", ["t1.ab.10hz", "t1.ab.20hz", "t1.abg.2hz", "t1.abg.10hz"])
+def test_type1_alpha_note_says_alpha_is_xi(study, base):
+    xi = ROWS.loc[f"{base}.xi", "published"]
+    res = result(study, f"{base}.alpha")
+    assert "under type I alpha = xi" in res.note and "cannot explain alpha" in res.note
+    assert f"printed xi = {float(xi):g} gives alpha = {float(xi):g}" in res.note
+    assert res.readings == ()
+    # the sibling beta row keeps the reading (and its plain note)
+    beta = result(study, f"{base}.beta")
+    assert beta.note.startswith("rule at the printed xi") and len(beta.readings) == 1
+
+
+@pytest.mark.parametrize("base", sorted({k.rsplit(".", 1)[0] for k in TABLE_KEYS}))
+def test_stability_note_cites_the_right_jury_condition(study, base):
+    _, _, _, order, _, p = _cell(f"{base}.stable")
+    note = result(study, f"{base}.stable").note
+    a, b, g = p["alpha"], p["beta"], 2 * p["gamma"]  # canonical gamma = 2 gamma_H
+    if order == 2:
+        # seed 000 eqs 42-44 (alpha-beta), not eq 47: alpha > 0, beta > 0, 2 alpha + beta < 4
+        assert "eqs 42-44" in note and "eq 47" not in note
+        assert f"alpha = {a:.3g} > 0, beta = {b:.3g} > 0" in note
+        assert f"2 alpha + beta = {2 * a + b:.3g} < 4" in note
+    else:
+        value = a * b + a * g / 2 - g
+        assert "eq 47" in note and f"gamma = {value:.3g}, needs > 0" in note
+    assert "0.0000" not in note
+
+
+def test_overshoot_note_writes_an_exact_zero_as_no_overshoot(study):
+    # started on the range the type II error starts at exactly 0 and stays above it by far
+    # more than round-off: the overshoot is exactly 0 by construction, not a rounded 0.000
+    for name in ("abg_t2_4", "abg_t2_40"):
+        lag = study.track[f"lag_{name}"].to_numpy()
+        assert lag[0] == 0.0 and lag[1:].min() > 1e-4 * lag.max()
+        assert study.metrics.loc[name, "overshoot"] == 0.0
+    note = result(study, "fig7.overshoot").note
+    assert "overshoot 0 / 0 (no overshoot)" in note and "0.000" not in note
+    from abglib.replications.huang.claims import _overshoots
+
+    assert _overshoots(0.0, 0.1234) == "0 / 0.123"
+    assert _overshoots(1e-15, 0.2) == "< 1e-09 / 0.200"
+
+
+def test_partial_fractions_note_names_the_one_set_left_out(study):
+    note = result(study, "eq12.partial_fractions").note
+    assert "9 of the 10" in note
+    assert "(the other, the rule's gains of the nominal ENBW for t2.abg.2hz, has repeated" in note
+    assert "the others have" not in note
+
+
+def test_lag_notes_say_which_gain_set(study):
+    # the trade-off's 10 Hz lag (4.29 m) is at the rule's gains of a true 10 Hz ENBW; the
+    # 4.444 m of the other rows at the printed Table 2 gains (true ENBW 9.85 Hz)
+    printed = "the alpha-beta gains printed in Table 2 for 10 Hz (alpha = 0.098, beta = 0.0025"
+    for key in ("lag.ab_accel_formula", "lag.type", "fig5.lag_4_44"):
+        assert printed in result(study, key).note, key
+    assert "true ENBW 9.85 Hz" in result(study, "lag.type").note
+    trade = result(study, "enbw.tradeoff").note
+    assert "gains of a true 2, 4, 10, 20, 40 Hz ENBW" in trade and "not the printed" in trade
+    assert "4.29" in trade

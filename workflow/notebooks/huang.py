@@ -465,11 +465,29 @@ lo_lost_text = (
     if lo_lost
     else "neither loses the track"
 )
+
+
+def overshoots(lo, hi):
+    """Two overshoots (low / high ENBW): '0 / 0 (no overshoot)' when the noise-free error
+    never swings past zero (the overshoot is then exactly 0, not a rounded one)."""
+    if lo == 0 and hi == 0:
+        return "0 / 0 (no overshoot)"
+    return " / ".join("0" if v == 0 else f"{v:.3f}" for v in (lo, hi))
+
+
+n_lost = len(lost_runs)
+stable_text = (
+    "It is stable"
+    if n_lost == 1
+    else "All of them are stable"
+    if len(lost_stable) == n_lost
+    else f"{len(lost_stable)} of them {'is' if len(lost_stable) == 1 else 'are'} stable"
+)
 md(
     f"""Peak noise-free error at {t1lo['enbw_hz']:.3g} / {t1hi['enbw_hz']:.3g} Hz: type I {t1lo['peak_lag']:.2f} /
 {t1hi['peak_lag']:.3f} m, type II {t2lo['peak_lag']:.2f} / {t2hi['peak_lag']:.3f} m. Overshoot: type
-I {t1lo['overshoot']:.3f} / {t1hi['overshoot']:.3f}, type II {t2lo['overshoot']:.3f} /
-{t2hi['overshoot']:.3f}. The largest error with noise at the low ENBW is {t1lo['peak_err']:.1f} m
+I {overshoots(t1lo['overshoot'], t1hi['overshoot'])}, type II
+{overshoots(t2lo['overshoot'], t2hi['overshoot'])}. The largest error with noise at the low ENBW is {t1lo['peak_err']:.1f} m
 (type I) and {t2lo['peak_err']:.1f} m (type II), against the assumed {gate:.1f} m gate: with loops
 started on the target, {lo_lost_text}.
 
@@ -477,10 +495,8 @@ Of all the simulated runs (section 7), {len(lost_runs)} lose the track at the no
 {and_list([run_text(r) for _, r in lost_runs.iterrows()])}, against the assumed
 {gate:.1f} m gate. """
     + (
-        f"""{'All' if len(lost_stable) == len(lost_runs) else len(lost_stable)} of them
-{'is' if len(lost_stable) == 1 else 'are'} stable: a
-stable loop loses the track too when its transient (low ENBW) or its noise (high ENBW)
-reaches the gate. """
+        f"""{stable_text}: a stable loop also loses the track when its error, from the
+transient at low ENBW or from the noise at high ENBW, grows past the gate. """
         if len(lost_stable)
         else ""
     )

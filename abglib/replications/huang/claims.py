@@ -24,6 +24,7 @@ from ...common.tables import roundoff
 from ...conventions import from_huang, to_huang
 from ...engine import track
 from ...gains import Gains
+from ...verdicts import format_number
 from .._claims import ClaimSet, Reading, Result
 from .printed import (
     bandwidth_for_sigma,
@@ -61,6 +62,8 @@ _EQ5_COUNTER = (0.1, 0.01, 0.1)
 #: Alpha-beta gains that satisfy eq 7 but are unstable (alpha > 2; alpha < 0).
 _EQ7_COUNTER = ((3.0, 0.1), (-0.05, 0.5))
 _SECTION_TABLES = "4. Tables 1-2 row by row"
+#: The routes table's gain sets (column ``gains``), in words.
+_GAIN_SETS = {"printed": "the printed gains", "nominal": "the rule's gains of the nominal ENBW"}
 
 
 def _sim(s: HuangStudy):
@@ -110,24 +113,46 @@ def _table_cell(s: HuangStudy, key: str) -> Result:
             f"xi = {r['xi_nominal']:.4f}",
         )
     if what == "stable":
-        eq = "eq 5" if r["order"] == 3 else "eq 7"
+        if r["order"] == 3:
+            eq, jury = (
+                "eq 5",
+                (
+                    "seed 000 eq 47, canonical gamma = 2 gamma_H: alpha beta + alpha gamma/2 - "
+                    f"gamma = {format_number(r['jury_eq47'], 3)}, needs > 0"
+                ),
+            )
+        else:
+            a, b = float(r["alpha_printed"]), float(r["beta_printed"])
+            eq, jury = (
+                "eq 7",
+                (
+                    f"seed 000 eqs 42-44: alpha = {format_number(a, 3)} > 0, beta = "
+                    f"{format_number(b, 3)} > 0, 2 alpha + beta = {format_number(2 * a + b, 3)} < 4"
+                ),
+            )
         return Result(
             bool(r["stable_jury"]),
-            f"{eq}: {bool(r['stable_eq5'])}; Jury (seed 000 eq 47 value "
-            f"{r['jury_eq47']:.4f}): {bool(r['stable_jury'])}; pole radius "
-            f"{r['pole_radius']:.4f}",
+            f"{eq}: {bool(r['stable_eq5'])}; Jury ({jury}): {bool(r['stable_jury'])}; pole "
+            f"radius {r['pole_radius']:.4f}",
         )
     if what == "xi":
         return Result(float(r["xi_nominal"]), f"the printed xi gives ENBW {r['rule_enbw']:.4g} Hz")
     col = {"alpha": "alpha", "beta": "beta", "gamma": "gamma_h"}[what]
-    note = (
-        f"rule at the printed xi = {r['xi_printed']:g} gives {r[f'rule_{col}']:.4g} "
-        f"(ENBW {r['rule_enbw']:.4g} Hz)"
-    )
     readings = ()
     # under type I alpha is xi itself: "the rule at the printed xi" would only restate the
     # printed xi, so the alpha row shares the xi row's verdict
-    if not (r["rule"] == "type1" and what == "alpha"):
+    if r["rule"] == "type1" and what == "alpha":
+        note = (
+            f"under type I alpha = xi, so the rule at the printed xi = {r['xi_printed']:g} "
+            f"gives alpha = {r[f'rule_{col}']:.4g} (ENBW {r['rule_enbw']:.4g} Hz) by "
+            "definition: that reading only restates the printed xi and cannot explain alpha "
+            "(see the xi row)"
+        )
+    else:
+        note = (
+            f"rule at the printed xi = {r['xi_printed']:g} gives {r[f'rule_{col}']:.4g} "
+            f"(ENBW {r['rule_enbw']:.4g} Hz)"
+        )
         readings = (
             Reading(
                 f"the rule evaluated at the printed xi = {r['xi_printed']:g} (whose ENBW is "
@@ -279,14 +304,23 @@ def _eq12(s: HuangStudy) -> Result:
     abg = s.routes[s.routes["eq13_reconstructed"].notna()]
     ok = abg[abg["eq11_12_reconstructed"].notna()]
     rel = float(np.max(np.abs(ok["eq11_12_reconstructed"] / ok["exact_lyapunov"] - 1.0)))
+    rest = abg[abg["eq11_12_reconstructed"].isna()]
+    names = ", ".join(
+        f"{_GAIN_SETS[g]} for {c}" for c, g in zip(rest["cell"], rest["gains"], strict=True)
+    )
+    others = (
+        f"(the other, {names}, has repeated roots, "
+        if len(rest) == 1
+        else f"(the others, {names}, have repeated roots, "
+    )
     return Result(
         bool(rel < 1e-5),
         f"the partial fractions of eqs 11-12 (constant K2/K5, bracket A/sqrt(B) + C/sqrt(D) + "
         f"E/sqrt(F)) agree with the exact ENBW to {roundoff(rel, bound=1e-5)} relative on "
         f"{len(ok)} of the "
-        f"{len(abg)} stable alpha-beta-gamma sets of Tables 1-2 (the others have repeated "
-        "roots, which partial fractions cannot separate; nearly repeated ones cost digits, "
-        "~eps^(1/3)); section 2",
+        f"{len(abg)} stable alpha-beta-gamma sets of Tables 1-2 "
+        + (f"{others}which partial fractions cannot separate; " if len(rest) else "(")
+        + "nearly repeated roots cost digits, ~eps^(1/3)); section 2",
     )
 
 
@@ -294,11 +328,18 @@ def _eq12(s: HuangStudy) -> Result:
 def _eq13_printed(s: HuangStudy) -> Result:
     abg = s.routes[s.routes["eq13_as_printed"].notna()]
     rel = abg["eq13_as_printed"] / abg["exact_lyapunov"]
+    by = {g: rel[abg["gains"] == g] for g in ("printed", "nominal")}
+
+    def between(r) -> str:
+        lo, hi = f"{r.min():.2g}", f"{r.max():.2g}"
+        return lo if lo == hi else f"between {lo} and {hi}"
+
     return Result(
         bool(np.allclose(rel, 1.0, rtol=1e-6)),
-        f"read literally, eq 13 gives between {rel.min():.2g} and {rel.max():.2g} times the "
-        "exact ENBW on the alpha-beta-gamma sets of Tables 1-2; three corrections are needed "
-        "(section 2)",
+        f"read literally, eq 13 gives {between(by['printed'])} times the exact ENBW on the "
+        f"alpha-beta-gamma sets printed in Tables 1-2 (the {len(by['printed'])} stable "
+        f"ones), and {between(by['nominal'])} times on the rule's gains that have the "
+        f"nominal ENBWs ({len(by['nominal'])} sets); three corrections are needed (section 2)",
     )
 
 
@@ -368,6 +409,17 @@ def _t2_10(s: HuangStudy, order: int):
     return s.printed_gains(f"t2.{'ab' if order == 2 else 'abg'}.{f5}hz")
 
 
+def _t2_10_words(s: HuangStudy) -> str:
+    """Which alpha-beta gains :func:`_t2_10` gives, in words, with their true ENBW."""
+    f5, *_ = _sim(s)
+    g = _t2_10(s, 2)
+    true = float(s.table_rows.loc[f"t2.ab.{f5}hz", "enbw_exact"])
+    return (
+        f"the alpha-beta gains printed in Table 2 for {f5} Hz (alpha = {float(g.alpha):g}, "
+        f"beta = {float(g.beta):g}; true ENBW {true:.3g} Hz)"
+    )
+
+
 @CLAIMS.claim("lag.ab_accel_formula")
 def _lag_ab(s: HuangStudy) -> Result:
     g = _t2_10(s, 2)
@@ -377,8 +429,9 @@ def _lag_ab(s: HuangStudy) -> Result:
     smooth = float(steady_state_lag(g, s.dt, "acceleration", A, "x_smooth"))
     return Result(
         bool(abs(pred - printed) < 1e-9 * printed),
-        f"A/(beta F_r^2) = {printed:.4f} m is the predicted-position lag (final value theorem "
-        f"{pred:.4f} m; the smoothed position lags (1 - alpha) times that, {smooth:.4f} m)",
+        f"with {_t2_10_words(s)}: A/(beta F_r^2) = {printed:.4f} m is the predicted-position "
+        f"lag (final value theorem {pred:.4f} m; the smoothed position lags (1 - alpha) times "
+        f"that, {smooth:.4f} m)",
     )
 
 
@@ -408,8 +461,9 @@ def _lag_type(s: HuangStudy) -> Result:
     lj = float(steady_state_lag(abg, s.dt, "jerk", B))
     return Result(
         bool(la > 0 and l3 == 0.0 and np.isfinite(lj) and lj > 0),
-        f"acceleration lag: alpha-beta {la:.3f} m, alpha-beta-gamma {l3:g}; "
-        f"jerk lag of alpha-beta-gamma {lj:.3g} m (finite)",
+        f"acceleration lag: alpha-beta {la:.3f} m with {_t2_10_words(s)}; alpha-beta-gamma "
+        f"{l3:g} with the type II gains of a true {f5} Hz ENBW; jerk lag of alpha-beta-gamma "
+        f"{lj:.3g} m (finite)",
     )
 
 
@@ -446,7 +500,8 @@ def _tradeoff(s: HuangStudy) -> Result:
     ]
     return Result(
         bool(np.all(np.diff(sig) > 0) and np.all(np.diff(lags) < 0)),
-        f"type II alpha-beta at {', '.join(f'{b:g}' for b in bns)} Hz: thermal error "
+        f"type II alpha-beta gains of a true {', '.join(f'{b:g}' for b in bns)} Hz ENBW (the "
+        "rule's gains, not the printed Table 2 sets): thermal error "
         f"{', '.join(f'{x:.2f}' for x in sig)} m, acceleration lag "
         f"{', '.join(f'{x:.2f}' for x in lags)} m",
     )
@@ -509,7 +564,8 @@ def _fig5_444(s: HuangStudy) -> Result:
     m = s.metrics.loc[f"ab_t2_{f5}_printed"]
     return Result(
         value,
-        f"closed form A T^2/beta (predicted position); simulated ({_start_note(s)}): "
+        f"closed form A T^2/beta (predicted position) with {_t2_10_words(s)}; simulated "
+        f"({_start_note(s)}): "
         f"noise-free error extrapolated to t = 0 {m['lag_intercept']:.3f} m (the jerk adds a "
         f"constant), growing by {m['lag_slope']:.3f} m/s",
     )
@@ -662,15 +718,27 @@ def _fig7_faster(s: HuangStudy) -> Result:
     )
 
 
+def _overshoots(lo: float, hi: float) -> str:
+    """Two overshoots (low / high ENBW) for a note: ``'0 / 0 (no overshoot)'`` when the
+    noise-free error never swings past zero (exactly 0: a loop started on the range starts
+    at an error of exactly 0 and, critically damped, stays above it by far more than
+    round-off), a round-off one as a bound, else three decimals."""
+    if lo == 0 and hi == 0:
+        return "0 / 0 (no overshoot)"
+    return " / ".join(
+        "0" if v == 0 else roundoff(v, bound=1e-9) if v < 1e-9 else f"{v:.3f}" for v in (lo, hi)
+    )
+
+
 @CLAIMS.claim("fig7.overshoot", depends_on=(*STARTS, DURATION))
 def _fig7_overshoot(s: HuangStudy) -> Result:
     a, b, _, _ = _pair(s, "2")
     c, d, _, _ = _pair(s, "1")
     return Result(
         bool(b["overshoot"] > a["overshoot"]),
-        f"type II noise-free error overshoot {a['overshoot']:.3f} / {b['overshoot']:.3f} "
-        f"(critically damped); type I {c['overshoot']:.3f} / {d['overshoot']:.3f} "
-        f"({_start_note(s)}); section 8",
+        f"type II (critically damped) noise-free error overshoot "
+        f"{_overshoots(a['overshoot'], b['overshoot'])}; type I "
+        f"{_overshoots(c['overshoot'], d['overshoot'])} ({_start_note(s)}); section 8",
     )
 
 
