@@ -631,10 +631,10 @@ def test_overshoot_note_writes_an_exact_zero_as_no_overshoot(study):
         assert study.metrics.loc[name, "overshoot"] == 0.0
     note = result(study, "fig7.overshoot").note
     assert "overshoot 0 / 0 (no overshoot)" in note and "0.000" not in note
-    from abglib.replications.huang.claims import _overshoots
+    from abglib.replications.huang.claims import overshoot_text
 
-    assert _overshoots(0.0, 0.1234) == "0 / 0.123"
-    assert _overshoots(1e-15, 0.2) == "< 1e-09 / 0.200"
+    assert overshoot_text(0.0, 0.1234) == "0 / 0.123"
+    assert overshoot_text(1e-15, 0.2) == "< 1e-09 / 0.200"
 
 
 def test_partial_fractions_note_names_the_one_set_left_out(study):

@@ -52,6 +52,7 @@ from IPython.display import Markdown, display
 
 from abglib.common.tables import read_table
 from abglib.replications.compare import non_matches
+from abglib.replications.huang.claims import overshoot_text
 from abglib.reporting.notebook import Report, and_list
 
 R = Report(doc, figures, tables, made_by, notebook, released=released)
@@ -467,14 +468,6 @@ lo_lost_text = (
 )
 
 
-def overshoots(lo, hi):
-    """Two overshoots (low / high ENBW): '0 / 0 (no overshoot)' when the noise-free error
-    never swings past zero (the overshoot is then exactly 0, not a rounded one)."""
-    if lo == 0 and hi == 0:
-        return "0 / 0 (no overshoot)"
-    return " / ".join("0" if v == 0 else f"{v:.3f}" for v in (lo, hi))
-
-
 n_lost = len(lost_runs)
 stable_text = (
     "It is stable"
@@ -486,8 +479,8 @@ stable_text = (
 md(
     f"""Peak noise-free error at {t1lo['enbw_hz']:.3g} / {t1hi['enbw_hz']:.3g} Hz: type I {t1lo['peak_lag']:.2f} /
 {t1hi['peak_lag']:.3f} m, type II {t2lo['peak_lag']:.2f} / {t2hi['peak_lag']:.3f} m. Overshoot: type
-I {overshoots(t1lo['overshoot'], t1hi['overshoot'])}, type II
-{overshoots(t2lo['overshoot'], t2hi['overshoot'])}. The largest error with noise at the low ENBW is {t1lo['peak_err']:.1f} m
+I {overshoot_text(t1lo['overshoot'], t1hi['overshoot'])}, type II
+{overshoot_text(t2lo['overshoot'], t2hi['overshoot'])}. The largest error with noise at the low ENBW is {t1lo['peak_err']:.1f} m
 (type I) and {t2lo['peak_err']:.1f} m (type II), against the assumed {gate:.1f} m gate: with loops
 started on the target, {lo_lost_text}.
 

@@ -718,7 +718,7 @@ def _fig7_faster(s: HuangStudy) -> Result:
     )
 
 
-def _overshoots(lo: float, hi: float) -> str:
+def overshoot_text(lo: float, hi: float) -> str:
     """Two overshoots (low / high ENBW) for a note: ``'0 / 0 (no overshoot)'`` when the
     noise-free error never swings past zero (exactly 0: a loop started on the range starts
     at an error of exactly 0 and, critically damped, stays above it by far more than
@@ -737,8 +737,8 @@ def _fig7_overshoot(s: HuangStudy) -> Result:
     return Result(
         bool(b["overshoot"] > a["overshoot"]),
         f"type II (critically damped) noise-free error overshoot "
-        f"{_overshoots(a['overshoot'], b['overshoot'])}; type I "
-        f"{_overshoots(c['overshoot'], d['overshoot'])} ({_start_note(s)}); section 8",
+        f"{overshoot_text(a['overshoot'], b['overshoot'])}; type I "
+        f"{overshoot_text(c['overshoot'], d['overshoot'])} ({_start_note(s)}); section 8",
     )
 
 
