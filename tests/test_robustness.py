@@ -836,3 +836,18 @@ def test_describe_seed_sets_names_the_sets_drawn():
     assert text.endswith("m under sets 0, 1, x under set 15")
     with pytest.raises(AbglibValueError, match="one seed set per verdict: 2 sets, 3"):
         R.describe_seed_sets(["m", "m", "x"], d, [0, 1])
+
+
+def test_a_range_with_a_negative_end_reads_as_a_range():
+    """'-74.9-30' read as a difference and '-74.9--30' worse (Huang's Fig 5-6 notes)."""
+    from abglib.replications._claims import _describe_flip
+
+    assert axis("d.a", [0.5, 2.0], 1.0).describe() == "0.5-2"
+    r = axis("d.s", [-74.9, 30.0], 0.0)
+    assert r.describe() == "-74.9 to 30"
+    flip = _describe_flip(
+        r, [(-74.9, "match"), (-30.0, "match"), (0.0, "mismatch"), (30.0, "mismatch")]
+    )
+    assert flip == (
+        "d.s (plausible -74.9 to 30, nominal 0): match at -74.9 to -30, mismatch at 0-30"
+    )

@@ -280,7 +280,7 @@ class PlausibleRange:
 
     def describe(self) -> str:
         if self.numeric and self.low is not None:
-            return f"{_fmt(self.low)}-{_fmt(self.high)}"
+            return _span(self.low, self.high)
         return ", ".join(_fmt(v) for v in self.values)
 
 
@@ -366,6 +366,13 @@ def _is_number(v) -> bool:
 
 def _fmt(v) -> str:
     return format_number(v, 4) if _is_number(v) else str(v)
+
+
+def _span(a, b) -> str:
+    """``'0.01-0.1'``, or ``'-74.9 to 30'`` where an end is negative (``'-74.9-30'`` would
+    read as a difference, ``'-74.9--30'`` worse)."""
+    neg = any(_is_number(v) and float(v) < 0 for v in (a, b))
+    return f"{_fmt(a)} to {_fmt(b)}" if neg else f"{_fmt(a)}-{_fmt(b)}"
 
 
 # --------------------------------------------------------------------------- evaluation
@@ -699,7 +706,7 @@ def _describe_flip(rng: PlausibleRange, by_value) -> str:
             runs.append([v, value, value])
     parts = []
     for v, a, b in runs:
-        span = _fmt(a) if _same(a, b) else f"{_fmt(a)}-{_fmt(b)}"
+        span = _fmt(a) if _same(a, b) else _span(a, b)
         parts.append(f"{v} at {span}")
     return f"{rng.name} (plausible {rng.describe()}, nominal {_fmt(rng.nominal)}): " + ", ".join(
         parts
