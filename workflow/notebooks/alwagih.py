@@ -236,7 +236,7 @@ for α > 1 are not (section 5).
 {int(at_nominal["M5_then_M4_then_M3"].sum())} of {len(at_nominal)} noise/coordinate cells. Over
 the {n_set} (α₀, window) settings of section 7 it holds in Y for
 {", ".join(f"(α₀ {g(r.alpha0)}, window {int(r.window)})" for r in y_hold.itertuples()) or "none"},
-and in X for {len(x_hold)} noise/setting cell(s). In Y at the configured settings M3
+and in X for {len(x_hold)} noise/setting cell{"" if len(x_hold) == 1 else "s"}. In Y at the configured settings M3
 {"beats" if mcx[("white", "Y", "M3")] < mcx[("white", "Y", "M4")] else "does not beat"} M4
 (white noise, {g(mcx[("white", "Y", "M3")])} against {g(mcx[("white", "Y", "M4")])} m), as in the
 paper's *own* Y columns (Tables 1–2: M3 {g(min(pm["M3"]))}–{g(max(pm["M3"]))} m, M4
@@ -267,6 +267,7 @@ an input the paper does not give (robust = false, section 8); they are `not_repr
 )
 
 # %%
+t12_rows = comparison[comparison["item"].str.match(r"Table [12], experiment")]
 display(
     Markdown(
         f"**Scorecard of this document:** {len(comparison)} rows — "
@@ -274,9 +275,15 @@ display(
             f"{v}: {int(counts.get(v, 0))}"
             for v in ("match", "mismatch", "explained", "not_reproducible")
         )
-        + f". {int(comparison['item'].str.match(r'Table [12], experiment').sum())} of the "
-        + "`not_reproducible` rows are the absolute RMSEs of Tables 1–2 (unknown trajectories); "
-        + f"robust: {int((comparison['robust'] == 'true').sum())}, "
+        + f". {len(t12_rows)} of the `not_reproducible` rows are the absolute RMSEs of "
+        + "Tables 1–2 (unknown trajectories"
+        + (
+            "; no value, so no assumed input or draw can change their verdict and they are "
+            "neither robust nor fragile"
+            if (t12_rows["robust"] == "").all()
+            else ""
+        )
+        + f"); robust: {int((comparison['robust'] == 'true').sum())}, "
         + f"fragile: {int((comparison['robust'] == 'false').sum())}."
     )
 )
@@ -498,9 +505,9 @@ R.table(
 # (`match` within the row's `tolerance`, `explained`, `mismatch` or
 # `not_reproducible`) and a note for every verdict but `match`; the columns are described in
 # the project's guide *Reading a report and the comparison tables* (`docs/reading-reports.md`,
-# published with these reports). Tables 1–2: `not_reproducible` (the note gives
-# the reconstruction's realisation and Monte Carlo values); Tables 3–6: recomputed from the
-# printed Tables 1–2; claims: on the printed tables or on the reconstruction (section 5).
+# published with these reports). Tables 1–2: `not_reproducible` (no value; the
+# reconstruction's realisation and Monte Carlo values are in section 2, `table1.csv`,
+# `table2.csv` and `mc_rmse.csv`); Tables 3–6: recomputed from the printed Tables 1–2; claims: on the printed tables or on the reconstruction (section 5).
 
 # %%
 display(comparison)

@@ -171,8 +171,8 @@ def mc_summary(rmse: pd.DataFrame, confidence: float = 0.95) -> pd.DataFrame:
     ``runs`` (as a float, as the table always held it), ``mean``, ``std`` (ddof 1) and the
     two-sided interval ``mean -+ t_{(1+confidence)/2, runs-1} std / sqrt(runs)``; with one
     run, NaN. Each group's numbers are numpy's reductions of its runs in table order (the
-    bits of the former ``groupby(...).apply``, without a Series per group: the claims'
-    robustness builds this table for every study, ~160 groups each).
+    bits of the former ``groupby(...).apply``, without a Series per group: until v0.4.5
+    the claims' robustness built this table for every study, ~160 groups each).
     """
     keys = ["noise", "experiment", "coord", "method"]
     # {key: its rows' positions, ascending}, in the order the groups first appear (the
