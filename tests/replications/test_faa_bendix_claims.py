@@ -103,6 +103,13 @@ def test_impulse_input_as_the_letter_report_writes_it(study, period):
     assert imp[0] == 1.0 / T and np.count_nonzero(imp) == 1 and imp.size == 40
 
 
+@claim_test(DOC, "program.impulse")
+def test_impulse_note_writes_one_area_when_its_ends_agree(study):
+    # every period's area T * sum(z) prints as 1: one value, not the range '1-1' of v0.4.5
+    note = CLAIMS.compute(study, "program.impulse").note
+    assert note.endswith("area T * sum(z) = 1 for every T") and "1-1" not in note
+
+
 @claim_test(DOC, "program.ramp")
 @pytest.mark.parametrize("period", PERIODS)
 def test_ramp_input_as_the_letter_report_writes_it(study, period):

@@ -675,6 +675,28 @@ def test_0707_is_a_cubic(s):
     assert value(s, "claim.cubic_0707") is True
 
 
+@claim_test(DOC, "claim.cubic_0707")
+def test_0707_notes_name_their_targets(s, comparison):
+    # the cubic's row solves |X̄/X| = 1/√2, the abstract's row the printed 0.707 (a larger
+    # ωT): v0.4.5 gave 0.437137 and 0.4372 at alpha = 0.3 without saying the targets differ
+    cubic = comparison.loc["claim.cubic_0707", "note"]
+    abstract = comparison.loc["claim.abstract_0707", "note"]
+    assert "the target is |X̄/X| = 1/√2 exactly, the half-power point the text's 0.707" in cubic
+    assert "(the abstract's row takes 0.707 as printed: a slightly larger ωT)" in cubic
+    assert "|X̄/X| = 0.707, the abstract's level as printed" in abstract
+    assert "not 1/√2, whose slightly smaller ωT is the cubic's row" in abstract
+    t = s.abstract_0707.set_index("alpha")
+    for alpha, (_, root, exact) in s.cubic.items():
+        assert exact < t.loc[alpha, "wT_0707"]
+        # the digits written (6 decimals of the fitted root, 4 of Brent's) hold with a
+        # margin: the fit's error (< 3e-9 relative, test above) is far below the distance
+        # to the next rounding boundary
+        for w, n in ((root, 6), (t.loc[alpha, "wT_0707"], 4)):
+            assert abs((w * 10**n) % 1 - 0.5) > 0.01
+        assert f"root ωT = {root:.6f} (exact {exact:.6f})" in cubic
+        assert f"vs {t.loc[alpha, 'wT_0707']:.4f}" in abstract
+
+
 @claim_test(DOC, "claim.overshoot_decreasing_alpha")
 def test_overshoot_decreases_with_alpha(s):
     overs = [peak(std_typed(a))[1] for a in (0.1, 0.3, 0.488)]

@@ -47,6 +47,9 @@ released = None  # file names of the tables copied beside the page (None: all)
 notebook = "workflow/notebooks/faa_bendix.py"
 
 # %%
+import math
+
+import numpy as np
 import pandas as pd
 from IPython.display import Markdown, display
 
@@ -91,11 +94,63 @@ def verdicts(prefix):
 
 
 # %%
+# The captions' gains against the memo's (captions.csv), one row per caption gain, and each
+# memo gain once (the impulse and the ramp captions print the same gains). A memo gain is
+# exact at two decimals, a half-unit tie (midway between its rounding and its truncation:
+# rounding, half up, prints it a unit higher), beyond the tie (truncation and rounding
+# differ by more), or neither (both give the same).
+cap = pd.concat(
+    captions[["input", "period_s", n, f"{n}_memo", f"{n}_memo_rounded", f"{n}_memo_truncated"]]
+    .set_axis(["input", "period_s", "caption", "memo", "rounded", "truncated"], axis=1)
+    .assign(gain=n)
+    for n in ("alpha", "beta")
+)
+memo_gains = cap.drop_duplicates(["period_s", "gain", "caption"])
+assert not memo_gains.duplicated(["period_s", "gain"]).any(), "inputs print different gains"
+cut_differs = memo_gains["rounded"] != memo_gains["truncated"]
+midway = (memo_gains["rounded"] + memo_gains["truncated"]) / 2
+is_tie = cut_differs & (memo_gains["memo"] - midway).abs().lt(1e-9)
+is_exact = ~cut_differs & (memo_gains["memo"] - memo_gains["truncated"]).abs().lt(1e-9)
+beyond = memo_gains[cut_differs & ~is_tie]
+# what the prose below says: every caption gain prints as the memo's truncation
+assert (cap["caption"] - cap["truncated"]).abs().lt(1e-9).all(), "a caption gain is not cut"
+GREEK = {"alpha": "α", "beta": "β"}
+
+
+def gain_cut(r, rounded=False):
+    """``'.066 → 0.06'`` (the memo's gain and its caption), optionally with the rounding."""
+    text = f"{fmt(r.memo)} → {r.caption:.2f}"
+    return f"{text} (rounded {r.rounded:.2f})" if rounded else text
+
+
+cap_gain = comparison[comparison["item"].str.contains("captions")
+                      & comparison["item"].str.contains("ALPHA=|BETA=")]
+cap_bad = cap_gain[cap_gain["verdict"] != "match"]
+# the gains of the rows that are not a match (item '... T = 1 s, BETA= 0.06'), and the
+# truncation reading their notes reject ('... gives 0.06 but at chance 0.111 > budget 0.05')
+bad_gains = cap_bad["item"].str.extract(r"T = (\d+) s, (ALPHA|BETA)=")
+bad_gains = set(zip(bad_gains[0].astype(int), bad_gains[1].str.lower(), strict=True))
+assert bad_gains == set(zip(beyond["period_s"], beyond["gain"], strict=True)), bad_gains
+rejected = cap_bad["note"].str.extract(
+    r"truncated \(the memo's gain\).* but at chance (\S+) > budget (\S+)$"
+).drop_duplicates()
+assert len(rejected) == 1 and not rejected.isna().any(axis=None), rejected
+trunc_chance, trunc_budget = rejected.iloc[0]
+beyond_text = ", ".join(
+    f"{GREEK[r.gain]} = {fmt(r.memo)} at T = {r.period_s} s, printed {r.caption:.2f} where "
+    f"rounding gives {r.rounded:.2f}"
+    for r in beyond.itertuples()
+)
+
 R.abstract(
-    """The FAA test program is the canonical α-β recursion. Sinsky's smoothing table holds
-for its printed gains three ways (closed form, Lyapunov, Monte Carlo); the captions' gains
-are the memo's truncated to two decimals, not rounded; every gain set of the test is stable
-and underdamped."""
+    f"""The FAA test program is the canonical α-β recursion. Sinsky's smoothing table holds
+for its printed gains three ways (closed form, Lyapunov, Monte Carlo). The captions' gains
+agree with the memo's truncated to two decimals throughout, but the table keeps
+{"the one gain" if len(beyond) == 1 else f"the {len(beyond)} gains"} where truncation and
+rounding differ beyond a half-unit tie ({beyond_text}) as a mismatch: a truncation reading
+of {"it" if len(beyond) == 1 else "each"} alone is too likely by chance (chance
+{trunc_chance} > budget {trunc_budget}). Every gain set of the test is stable and
+underdamped."""
 )
 
 # %% [markdown]
@@ -120,13 +175,15 @@ r1 = rnd.loc[1]
 p1 = memo_p.loc[1]
 tol1 = float(ratio_rows.loc[ratio_rows["item"].str.contains("period 1 s")
                             & ratio_rows["item"].str.contains("xdot"), "tolerance"].iloc[0])
-cap_gain = comparison[comparison["item"].str.contains("captions")
-                      & comparison["item"].str.contains("ALPHA=|BETA=")]
 worst_sfy = gains.set_index("period_s").filter(like="_sfy").max(axis=1)
 others_sfy = worst_sfy.drop(index=1).max()
 mc_n = int(memo["mc_samples"].iloc[0])
 bb = damping["beta_over_benedict"]
-unexplained_caps = "; ".join(cap_gain.loc[cap_gain["verdict"] != "match", "item"])
+unexplained_caps = "; ".join(cap_bad["item"])
+rows_per_gain = len(cap_bad) // max(1, len(beyond))
+the_beyond = "the one gain" if len(beyond) == 1 else f"the {len(beyond)} gains"
+ties = memo_gains[is_tie]
+neither = memo_gains[~cut_differs & ~is_exact]
 sweep = robustness[robustness["input"] == "faa_bendix.plot_divisions"]
 div_nominal = sweep.loc[sweep["nominal"].astype(str) == "True", "value"].iloc[0]
 div_values = sorted(sweep["value"].unique(), key=float)
@@ -147,9 +204,23 @@ show(
     f"{worst_sfy.loc[1]:.2f} of a division.\n\n"
     f"**The captions.** {int((cap_gain['verdict'] == 'match').sum())} of the {len(cap_gain)} "
     f"caption gains are the memo's to half a unit in their second decimal; the other "
-    f"{int((cap_gain['verdict'] != 'match').sum())} ({unexplained_caps}) are "
-    f"{'/'.join(sorted(set(cap_gain.loc[cap_gain['verdict'] != 'match', 'verdict'])))}: every "
-    f"caption gain is the memo's *truncated*, not rounded, to two decimals. The printed SFY "
+    f"{len(cap_bad)} ({unexplained_caps}) have verdict "
+    f"{'/'.join(sorted(set(cap_bad['verdict'])))}: "
+    f"{'one gain' if len(beyond) == 1 else f'{len(beyond)} gains'} printed "
+    f"{'twice' if rows_per_gain == 2 else f'{rows_per_gain} times'}, on the impulse and the "
+    f"ramp captions ({beyond_text}). The captions are consistent with truncation "
+    f"throughout: each of the memo's {len(memo_gains)} gains is printed as its truncation "
+    f"to two decimals — {len(memo_gains[is_exact])} exact at two decimals; {len(neither)} "
+    f"whose rounding and truncation agree "
+    f"({', '.join(gain_cut(r) for r in neither.itertuples())}); {len(ties)} ending in a half "
+    f"unit, printed low ({', '.join(gain_cut(r) for r in ties.itertuples())}; rounding, "
+    f"half up, would print them a unit higher); and {the_beyond} where truncation and "
+    f"rounding differ beyond the tie, "
+    f"{'; '.join(gain_cut(r, rounded=True) for r in beyond.itertuples())}. The ties are "
+    f"matches without any reading (half a unit is the tolerance). For {the_beyond} the table "
+    f"does not accept truncation as the reading: judged alone, a truncation reading has "
+    f"chance {trunc_chance} of reproducing an unrelated number printed to the same precision, "
+    f"above its budget {trunc_budget}, so its {len(cap_bad)} rows stay mismatches. The printed SFY "
     f"(a power of ten on every graph) is what fits each input's peak in {div_nominal} grid "
     f"divisions — a reconstruction that depends on the plot height, which the document never "
     f"gives: across {', '.join(div_values)} divisions {robust_n} rows keep their verdict and "
@@ -230,14 +301,15 @@ R.figure("ramp", "The test program's ramp responses recomputed (same key).")
 # same in SFY divisions.
 
 # %%
-cut = []
-for n in ("alpha", "beta"):
-    c = captions[captions["input"] == "ramp"]
-    for r in c[c[f"{n}_memo_rounded"] != c[f"{n}_memo_truncated"]].itertuples():
-        cut.append(f"{fmt(getattr(r, f'{n}_memo'))} → {getattr(r, n):.2f}")
+cut = memo_gains[cut_differs]
 show(
-    f"The captions' gains are the memo's truncated (not rounded) to two digits; {len(cut)} of "
-    f"them differ from rounding: {', '.join(cut)}."
+    f"Every caption gain prints as the memo's truncated to two decimals; rounding (half up) "
+    f"would print {len(cut)} of the memo's {len(memo_gains)} gains otherwise: "
+    f"{', '.join(gain_cut(r) for r in cut.itertuples())}. All but "
+    f"{', '.join(gain_cut(r) for r in beyond.itertuples())} are half-unit ties, within the "
+    f"tolerance; the table keeps {the_beyond} beyond the tie as a mismatch, truncation not "
+    f"being accepted as the reading of {'it' if len(beyond) == 1 else 'them'} alone (chance "
+    f"{trunc_chance} > budget {trunc_budget}; section 1b)."
 )
 display(gains.set_index("period_s").T)
 
@@ -284,10 +356,38 @@ cols = ["period_s", "alpha", "beta", "position_published", "position_closed",
         "velocity_mc_lo", "velocity_mc_hi", "velocity_mc_z", "velocity_per_sample",
         "position_closed_captions", "velocity_closed_captions"]
 display(memo[cols])
+memo_text = R.read("memo_table", dtype=str)
+
+
+def significant_digits(text):
+    """The significant digits of a number as the table writes it ('0.132142954': 9)."""
+    return len(text.lower().partition("e")[0].lstrip("+-").replace(".", "").lstrip("0"))
+
+
+def closed_vs_lyapunov(k):
+    """A bound on |closed form − Lyapunov| from the written table: the written values'
+    difference plus half a unit in the last digit of each, at the significant digits the
+    column is written to (its longest number; a trailing zero is not written), rounded up to
+    one significant digit, e.g. '< 1e-10'. Their exact difference is round-off, which the
+    table does not write."""
+    a, b = memo_text[f"{k}_closed"], memo_text[f"{k}_lyapunov"]
+    units = 0.0
+    for col in (a, b):
+        digits = col.map(significant_digits).max()
+        v = col.astype(float).abs()
+        units = units + 10.0 ** (np.floor(np.log10(v)) + 1 - digits) / 2
+    bound = float(((a.astype(float) - b.astype(float)).abs() + units).max())
+    exp = math.floor(math.log10(bound))
+    lead = math.ceil(round(bound / 10.0**exp, 9))
+    if lead == 10:
+        lead, exp = 1, exp + 1
+    return f"< {lead}e{exp}"
+
+
 show(
-    f"Largest |closed form − Lyapunov|: "
-    f"{(memo['position_closed'] - memo['position_lyapunov']).abs().max():.2e} (position), "
-    f"{(memo['velocity_closed'] - memo['velocity_lyapunov']).abs().max():.2e} (velocity). "
+    f"Largest |closed form − Lyapunov|: {closed_vs_lyapunov('position')} (position), "
+    f"{closed_vs_lyapunov('velocity')} (velocity), a bound from the digits the table writes: "
+    f"the two routes agree to round-off. "
     f"Monte Carlo samples per row: {mc_n:,}; largest |z| "
     f"{memo[['position_mc_z', 'velocity_mc_z']].abs().to_numpy().max():.2f}."
 )

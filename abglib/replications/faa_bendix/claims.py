@@ -46,9 +46,9 @@ def _impulse(s: FaaBendixStudy) -> Result:
         area = float(np.sum(z) * p)
         areas.append(area)
         ok &= bool(np.count_nonzero(z) == 1 and z[0] == 1.0 / p and abs(area - 1.0) <= 1e-12)
-    return Result(
-        ok, f"one nonzero sample 1/T at k = 0; area T * sum(z) = {min(areas):g}-{max(areas):g}"
-    )
+    lo, hi = f"{min(areas):g}", f"{max(areas):g}"
+    area = f"{lo} for every T" if lo == hi else f"{lo}-{hi} over the periods"
+    return Result(ok, f"one nonzero sample 1/T at k = 0; area T * sum(z) = {area}")
 
 
 def _ramp_rises(z: np.ndarray, T: float) -> int:

@@ -464,7 +464,9 @@ def _cubic(s: SteelmanStudy) -> Result:
         parts.append(f"α = {a:g}: degree {deg}, root ωT = {root:.6f} (exact {exact:.6f})")
     return Result(
         all(ok),
-        "|X̄/X|² = 1/2 as a polynomial in cos ωT: " + "; ".join(parts) + f"; see '{SEC_TEXT}'",
+        "the target is |X̄/X| = 1/√2 exactly, the half-power point the text's 0.707 stands for "
+        "(the abstract's row takes 0.707 as printed: a slightly larger ωT): |X̄/X|² = 1/2 as a "
+        "polynomial in cos ωT: " + "; ".join(parts) + f"; see '{SEC_TEXT}'",
     )
 
 
@@ -586,7 +588,8 @@ def _abstract_0707(s: SteelmanStudy) -> Result:
     return Result(
         bool(t["rel_err"].max() <= rtol),
         "no exact equation is given (the text says it needs a cubic); eq 53 (-.15) against the "
-        "ωT where |X̄/X| = 0.707 (Brent on the frequency response): "
+        "ωT where |X̄/X| = 0.707, the abstract's level as printed (Brent on the frequency "
+        "response; not 1/√2, whose slightly smaller ωT is the cubic's row): "
         + ", ".join(
             f"{w53:.4f} vs {w:.4f} ({e:.2%}) at α = {a:g}"
             for a, w, w53, e in zip(
