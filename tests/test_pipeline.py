@@ -11,6 +11,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 import yaml
@@ -202,6 +203,41 @@ def test_datasets_and_alwagih_outputs(two_runs):
     assert len(comp) == published
     assert (comp.loc[comp["depends_on"] != "", "robust"] != "").all()
     assert (a / REPORTS / "alwagih" / "index.html").is_file()
+
+
+def _page_text(path: Path) -> str:
+    """A report page's words, tags dropped, whitespace collapsed."""
+    html = path.read_text(encoding="utf-8")
+    return " ".join(re.sub(r"<[^>]+>", " ", html).replace("&gt;", ">").split())
+
+
+@on_run1
+def test_faa_bendix_prose_says_what_its_tables_say(run1):
+    """v0.4.5 wrote that every caption gain "is the memo's *truncated*, not rounded", the
+    reading its comparison.csv rejects for the 1 s beta, and |closed form - Lyapunov| read
+    back from the CSV as "0.00e+00": the page now says what the build's tables say."""
+    text = _page_text(run1 / REPORTS / "faa_bendix" / "index.html")
+    comp = pd.read_csv(run1 / "results/faa_bendix/comparison.csv", dtype=str, keep_default_na=False)
+    gains = comp[comp["item"].str.contains("captions") & comp["item"].str.contains("ALPHA=|BETA=")]
+    bad = gains[gains["verdict"] != "match"]
+    assert len(bad) == 2 and set(bad["verdict"]) == {"mismatch"}  # one gain, two captions
+    chance, budget = re.search(r"at chance (\S+) > budget (\S+)$", bad["note"].iloc[0]).groups()
+    assert "*truncated*, not rounded" not in text and "truncated, not rounded" not in text
+    assert f"chance {chance} > budget {budget}" in text
+    assert "one gain printed twice, on the impulse and the ramp captions" in text
+    # the memo's gains in thousandths (the ramp captions print the impulse ones' gains)
+    cap = pd.read_csv(run1 / "results/faa_bendix/captions.csv")
+    ramp = cap[cap["input"] == "ramp"]
+    k = np.round(np.concatenate([ramp["alpha_memo"], ramp["beta_memo"]]) * 1000).astype(int)
+    exact, ties = int(np.sum(k % 10 == 0)), int(np.sum(k % 10 == 5))
+    assert f"each of the memo's {len(k)} gains is printed as its truncation" in text
+    assert f"{exact} exact at two decimals" in text
+    assert f"{ties} ending in a half unit, printed low" in text
+    assert "0.00e+00" not in text
+    assert (
+        "Difference between the closed form and Lyapunov: none at the digits the table "
+        "writes (position), none at the digits the table writes (velocity)"
+    ) in text
 
 
 @on_run1

@@ -423,3 +423,22 @@ def test_t5_ramp_captions_predicted_twice(study, judged):
     assert f"{np.max(np.abs(out['v_smooth'])) / 10.0:.2f} divisions" in res.note
     row = judged[0].loc["captions.ramp.T5.predicted_twice"]
     assert row["verdict"] == "mismatch" and "SMOOTHED VELOCITY graph" in row["note"]
+
+
+@pytest.mark.parametrize("like", ["0.06", "0.1"])
+def test_cut_kind_against_integer_arithmetic(like):
+    """cut_kind (exact decimals) against the same four cases in integer units of the
+    memo's last digit: every three-decimal gain from .000 to .999."""
+    step = {"0.06": 10, "0.1": 100}[like]  # thousandths per unit of the caption's last digit
+    for k in range(1000):
+        rest = k % step
+        want = (
+            "exact"
+            if rest == 0
+            else "tie"
+            if 2 * rest == step
+            else "same"
+            if 2 * rest < step
+            else "beyond"
+        )
+        assert printed.cut_kind(f"{k / 1000:.3f}", like) == want, k

@@ -47,9 +47,6 @@ released = None  # file names of the tables copied beside the page (None: all)
 notebook = "workflow/notebooks/faa_bendix.py"
 
 # %%
-import math
-
-import numpy as np
 import pandas as pd
 from IPython.display import Markdown, display
 
@@ -95,23 +92,19 @@ def verdicts(prefix):
 
 # %%
 # The captions' gains against the memo's (captions.csv), one row per caption gain, and each
-# memo gain once (the impulse and the ramp captions print the same gains). A memo gain is
-# exact at two decimals, a half-unit tie (midway between its rounding and its truncation:
-# rounding, half up, prints it a unit higher), beyond the tie (truncation and rounding
-# differ by more), or neither (both give the same).
+# memo gain once (the impulse and the ramp captions print the same gains); `cut` says how
+# the memo gain meets two decimals (abglib.replications.faa_bendix.printed.cut_kind).
 cap = pd.concat(
-    captions[["input", "period_s", n, f"{n}_memo", f"{n}_memo_rounded", f"{n}_memo_truncated"]]
-    .set_axis(["input", "period_s", "caption", "memo", "rounded", "truncated"], axis=1)
+    captions[["input", "period_s", n, f"{n}_memo", f"{n}_memo_rounded", f"{n}_memo_truncated",
+              f"{n}_memo_cut"]]
+    .set_axis(["input", "period_s", "caption", "memo", "rounded", "truncated", "cut"], axis=1)
     .assign(gain=n)
     for n in ("alpha", "beta")
 )
 memo_gains = cap.drop_duplicates(["period_s", "gain", "caption"])
 assert not memo_gains.duplicated(["period_s", "gain"]).any(), "inputs print different gains"
-cut_differs = memo_gains["rounded"] != memo_gains["truncated"]
-midway = (memo_gains["rounded"] + memo_gains["truncated"]) / 2
-is_tie = cut_differs & (memo_gains["memo"] - midway).abs().lt(1e-9)
-is_exact = ~cut_differs & (memo_gains["memo"] - memo_gains["truncated"]).abs().lt(1e-9)
-beyond = memo_gains[cut_differs & ~is_tie]
+is_exact, is_tie = memo_gains["cut"] == "exact", memo_gains["cut"] == "tie"
+beyond = memo_gains[memo_gains["cut"] == "beyond"]
 # what the prose below says: every caption gain prints as the memo's truncation
 assert (cap["caption"] - cap["truncated"]).abs().lt(1e-9).all(), "a caption gain is not cut"
 GREEK = {"alpha": "α", "beta": "β"}
@@ -183,7 +176,7 @@ unexplained_caps = "; ".join(cap_bad["item"])
 rows_per_gain = len(cap_bad) // max(1, len(beyond))
 the_beyond = "the one gain" if len(beyond) == 1 else f"the {len(beyond)} gains"
 ties = memo_gains[is_tie]
-neither = memo_gains[~cut_differs & ~is_exact]
+neither = memo_gains[memo_gains["cut"] == "same"]
 sweep = robustness[robustness["input"] == "faa_bendix.plot_divisions"]
 div_nominal = sweep.loc[sweep["nominal"].astype(str) == "True", "value"].iloc[0]
 div_values = sorted(sweep["value"].unique(), key=float)
@@ -301,7 +294,7 @@ R.figure("ramp", "The test program's ramp responses recomputed (same key).")
 # same in SFY divisions.
 
 # %%
-cut = memo_gains[cut_differs]
+cut = memo_gains[memo_gains["cut"].isin(["tie", "beyond"])]
 show(
     f"Every caption gain prints as the memo's truncated to two decimals; rounding (half up) "
     f"would print {len(cut)} of the memo's {len(memo_gains)} gains otherwise: "
@@ -359,35 +352,19 @@ display(memo[cols])
 memo_text = R.read("memo_table", dtype=str)
 
 
-def significant_digits(text):
-    """The significant digits of a number as the table writes it ('0.132142954': 9)."""
-    return len(text.lower().partition("e")[0].lstrip("+-").replace(".", "").lstrip("0"))
-
-
 def closed_vs_lyapunov(k):
-    """A bound on |closed form − Lyapunov| from the written table: the written values'
-    difference plus half a unit in the last digit of each, at the significant digits the
-    column is written to (its longest number; a trailing zero is not written), rounded up to
-    one significant digit, e.g. '< 1e-10'. Their exact difference is round-off, which the
-    table does not write."""
+    """|closed form − Lyapunov| as the written table shows it: 'none' when every written
+    pair is the same string (their exact difference is round-off, below the digits the
+    table writes), else the largest written difference."""
     a, b = memo_text[f"{k}_closed"], memo_text[f"{k}_lyapunov"]
-    units = 0.0
-    for col in (a, b):
-        digits = col.map(significant_digits).max()
-        v = col.astype(float).abs()
-        units = units + 10.0 ** (np.floor(np.log10(v)) + 1 - digits) / 2
-    bound = float(((a.astype(float) - b.astype(float)).abs() + units).max())
-    exp = math.floor(math.log10(bound))
-    lead = math.ceil(round(bound / 10.0**exp, 9))
-    if lead == 10:
-        lead, exp = 1, exp + 1
-    return f"< {lead}e{exp}"
+    if (a == b).all():
+        return "none at the digits the table writes"
+    return f"{(a.astype(float) - b.astype(float)).abs().max():.2g}"
 
 
 show(
-    f"Largest |closed form − Lyapunov|: {closed_vs_lyapunov('position')} (position), "
-    f"{closed_vs_lyapunov('velocity')} (velocity), a bound from the digits the table writes: "
-    f"the two routes agree to round-off. "
+    f"Difference between the closed form and Lyapunov: {closed_vs_lyapunov('position')} "
+    f"(position), {closed_vs_lyapunov('velocity')} (velocity). "
     f"Monte Carlo samples per row: {mc_n:,}; largest |z| "
     f"{memo[['position_mc_z', 'velocity_mc_z']].abs().to_numpy().max():.2f}."
 )

@@ -83,3 +83,35 @@ def round_half_up(value: str, like: str) -> float:
     """``value`` rounded half up to the decimals of ``like``: ``('.465', '0.46')`` -> 0.47."""
     q = Decimal(1).scaleb(-_digits(like))
     return float(parse_printed(value).quantize(q, rounding=ROUND_HALF_UP))
+
+
+#: The kinds of :func:`cut_kind`, in words (the FAA report's caption paragraph).
+CUT_KINDS = {
+    "exact": "exact at the caption's decimals",
+    "same": "rounding and truncation agree",
+    "tie": "a half-unit tie: rounding, half up, prints it a unit higher than truncation",
+    "beyond": "truncation and rounding differ beyond a tie",
+}
+
+
+def cut_kind(value: str, like: str) -> str:
+    """How the printed ``value`` (a memo gain) meets the decimals of ``like`` (its caption),
+    in exact decimal arithmetic: ``'exact'`` (no digit to cut), ``'same'`` (rounding half
+    up and truncation give the same number), ``'tie'`` (``value`` is midway between them,
+    so a caption printed low is a truncation *or* a rounding half down) or ``'beyond'``
+    (they differ and ``value`` is not midway: only truncation prints it low), the keys of
+    :data:`CUT_KINDS`.
+
+    Examples
+    --------
+    >>> [cut_kind(v, "0.06") for v in (".25", ".431", ".465", ".066")]
+    ['exact', 'same', 'tie', 'beyond']
+    """
+    q = Decimal(1).scaleb(-_digits(like))
+    v = parse_printed(value)
+    if v == v.quantize(q, rounding=ROUND_DOWN):
+        return "exact"
+    cut = v.quantize(q, rounding=ROUND_DOWN)
+    if cut == v.quantize(q, rounding=ROUND_HALF_UP):
+        return "same"
+    return "tie" if v - cut == q / 2 else "beyond"

@@ -134,8 +134,9 @@ class FaaBendixStudy(Study):
     @cached_property
     def captions_table(self) -> pd.DataFrame:
         """Per caption group: the printed numbers, the memo's gains (printed, rounded and
-        truncated to the caption's decimals), the nearest memo period, the input's peak
-        and the reconstructed SFY at ``plot_divisions``."""
+        truncated to the caption's decimals, and how the two cuts meet:
+        :func:`~abglib.replications.faa_bendix.printed.cut_kind`), the nearest memo period,
+        the input's peak and the reconstructed SFY at ``plot_divisions``."""
         memo = self.memo_gains
         div = float(self.cfg["plot_divisions"])
         rows = []
@@ -150,6 +151,7 @@ class FaaBendixStudy(Study):
                 row[f"{name}_memo"] = float(m[name])
                 row[f"{name}_memo_rounded"] = printed.round_half_up(pm, cap)
                 row[f"{name}_memo_truncated"] = printed.truncate(pm, cap)
+                row[f"{name}_memo_cut"] = printed.cut_kind(pm, cap)
             row["nearest_memo_period"] = int(dist.idxmin())
             row["input_peak"] = peak
             row["input_peak_in_sfy"] = peak / c.sfy
