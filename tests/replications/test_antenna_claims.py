@@ -349,6 +349,12 @@ def test_known_error_shrinks_with_weight(s):
 def test_high_order_small_error(s):
     e5, _ = long_max(s, s.ctrl_high, 1.0, 5)
     assert e5 < 0.1 and value(s, "ch9.high_order_small") is True
+    note = CLAIMS.compute(s, "ch9.high_order_small").note
+    # a negative change is not called an increase, and the bound on 'almost zero' says
+    # where it comes from and over which bounds the verdict holds
+    assert "relative change of the max error" in note and "increase over" not in note
+    assert "'nearly equals' ratio below 2 of sec. 6.2" in note
+    assert "holds for any positive bound on the increase" in note
 
 
 # ----------------------------------------------------------------------------- ch. 8
@@ -821,8 +827,11 @@ def test_stability_edges(s, key):
     v = value(s, key)
     name = key.split(".")[1].rsplit("_", 1)[0]
     tol = s.cfg["robustness"]["radius_tolerance"]
-    if "beyond" in CLAIMS.compute(s, key).note:  # a grid end: still stable there
+    note = CLAIMS.compute(s, key).note
+    if "beyond" in note:  # a grid end: still stable there, and the note says it is a bound
         assert radius(s, name, v) <= 1 + tol
+        assert "reproduced is the grid's end, a bound and not an edge" in note
+        assert f"'{'<' if key.endswith('lower') else '>'} {v:g}'" in note
     else:  # a located edge: stable just inside, unstable just outside
         inside = v * (1.001 if key.endswith("lower") else 0.999)
         outside = v * (0.999 if key.endswith("lower") else 1.001)
@@ -852,9 +861,63 @@ def test_others_never_unstable(s):
 @claim_test(DOC, "appH.beta_a_p_a_most_sensitive")
 def test_most_sensitive_parameters(s):
     res = CLAIMS.compute(s, "appH.beta_a_p_a_most_sensitive")
-    # p_a's window is by far the narrowest; beta_a's is not narrower than beta_d's
-    assert "p_a 0.0" in res.note and res.value is False
+    # the small config's factor grid (0.5-2) ends before beta_d's and beta_a's edges: both
+    # stable to the grid's ends, so their margins are bounds and cannot be ordered
+    for n in ("beta_d", "beta_a"):
+        r = s.stability_of(n)
+        assert np.isnan(r["lower"]) and np.isnan(r["upper"])
+        assert radius(s, n, r["grid_min"]) <= 1 + 1e-6 and radius(s, n, r["grid_max"]) <= 1 + 1e-6
+    assert res.value is None and "beta_a not decidable against beta_d" in res.note
+    assert "p_a below beta_d" in res.note  # p_a's lower edge is inside even this grid
     assert design_controller(s.params, s.dt, s.q, s.r) is s.ctrl  # memoised design
+
+
+class _Edges:
+    """A stand-in study whose stability rows are given (``name: (lower, upper, lo, hi)``)."""
+
+    def __init__(self, rows):
+        self.rows = rows
+
+    def stability_of(self, name):
+        lo, hi, gmin, gmax = self.rows[name]
+        return {"lower": lo, "upper": hi, "grid_min": gmin, "grid_max": gmax}
+
+
+# release v0.4.5's stability.csv: beta_d and beta_a stable to the grid's end 10
+RELEASE_EDGES = {
+    "beta_d": (0.49991, np.nan, 0.1, 10.0),
+    "beta_a": (0.28106, np.nan, 0.1, 10.0),
+    "p_a": (0.98172, 1.0277, 0.1, 1.05),
+}
+
+
+def test_most_sensitive_compares_located_edges_only():
+    from abglib.replications.antenna.claims_apph import _most
+
+    res = _most(_Edges(RELEASE_EDGES))
+    # the nearer edges are located: beta_a tolerates a factor 0.281, beta_d only 0.5, so
+    # beta_a is not the more sensitive (margins ln(1/0.5) = 0.693, ln(1/0.281) = 1.27)
+    assert res.value is False
+    assert "natural log" in res.note
+    assert "beta_d 0.693 (edges 0.5 to > 10)" in res.note
+    assert "beta_a 1.27 (edges 0.281 to > 10)" in res.note
+    assert "beta_a not below beta_d, p_a below beta_d" in res.note
+    # widths counting a grid end are lower bounds, and beta_a against beta_d is open
+    assert "beta_d >= 3, beta_a >= 3.57, p_a 0.0458" in res.note
+    assert "by width beta_a not decidable against beta_d" in res.note
+
+
+def test_most_sensitive_is_open_when_a_nearer_edge_is_past_the_grid():
+    from abglib.replications.antenna.claims_apph import _most
+
+    # beta_a stable over its whole grid 0.1-1.5: its margin is only bounded, >= ln 1.5 =
+    # 0.405, which beta_d's located 0.693 neither exceeds nor falls below for sure
+    rows = {**RELEASE_EDGES, "beta_a": (np.nan, np.nan, 0.1, 1.5)}
+    res = _most(_Edges(rows))
+    assert res.value is None and "beta_a >= 0.405" in res.note
+    # the text's own window 0.8-1.2 (margin ln 1.2 = 0.182): decided, more sensitive
+    rows["beta_a"] = (0.8, 1.2, 0.1, 10.0)
+    assert _most(_Edges(rows)).value is True
 
 
 def test_every_claim_declares_the_inputs_it_reads():

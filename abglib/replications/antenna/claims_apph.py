@@ -46,8 +46,9 @@ def _edge(s, key):
         lim = row["grid_min" if side == "lower" else "grid_max"]
         return Result(
             float(lim),
-            f"{EDGE_NOTE}; stable to the end of the grid: the limit is "
-            f"beyond {lim:g} (a bound, not a limit)",
+            f"{EDGE_NOTE}; stable to the end of the grid, so the edge lies beyond {lim:g} "
+            f"('{'<' if side == 'lower' else '>'} {lim:g}'): reproduced is the grid's end, a "
+            "bound and not an edge, and abs_err only bounds the error (the edge is further out)",
         )
     # the edge is located by brentq to 1e-6 relative (robustness.stable_interval): its digits
     # beyond that move with the BLAS kernel (6.5e-8 relative measured), so 5 are kept
@@ -86,17 +87,78 @@ def _others(s):
     return Result(ok, f"every factor {f.min():.3g} ... {f.max():.3g} stable for p_f, beta_f, kappa")
 
 
+#: The claim "not very robust, especially for variations in beta_a and p_a" compares these
+#: two with beta_d, whose window the text prints as wide (Fig. I.20: stable up to 4 times).
+SENSITIVE = ("beta_a", "p_a")
+REFERENCE = "beta_d"
+
+
+def _sides(s, name):
+    """How far the stable design-factor interval of ``name`` reaches below and above the
+    real value (factor 1), each as ``(low, high)`` bounds of ln(factor ratio) and the edge as
+    written: a located edge gives low = high; an edge past the grid's end (stable to the
+    end) gives only the bound, high = inf, written '< 0.1' or '> 10'."""
+    r = s.stability_of(name)
+    out = []
+    for side, end, sign, cmp in (("lower", "grid_min", -1.0, "<"), ("upper", "grid_max", 1.0, ">")):
+        v = float(r[side])
+        if np.isnan(v):
+            g = float(r[end])
+            out.append(((sign * np.log(g), np.inf), f"{cmp} {g:.3g}"))
+        else:
+            out.append(((sign * np.log(v), sign * np.log(v)), f"{v:.3g}"))
+    return out
+
+
+def _below(a, b):
+    """Whether interval ``a = (low, high)`` lies below ``b``: True, False, or None when the
+    bounds leave it open (not decidable)."""
+    if a[1] < b[0]:
+        return True
+    if a[0] >= b[1]:
+        return False
+    return None
+
+
+def _written(x) -> str:
+    """An interval as written: its value when located, '>= low' when only bounded below,
+    'low to high' when bounded on both sides."""
+    if x[1] == x[0]:
+        return f"{x[0]:.3g}"
+    return f">= {x[0]:.3g}" if np.isinf(x[1]) else f"{x[0]:.3g} to {x[1]:.3g}"
+
+
 @CLAIMS.claim("appH.beta_a_p_a_most_sensitive", depends_on=EST)
 def _most(s):
-    width = {}
-    for n in ("beta_d", "beta_a", "p_a"):
-        r = s.stability_of(n)
-        lo = r["grid_min"] if np.isnan(r["lower"]) else r["lower"]
-        hi = r["grid_max"] if np.isnan(r["upper"]) else r["upper"]
-        width[n] = float(np.log(hi / lo))
-    ok = width["p_a"] < width["beta_d"] and width["beta_a"] < width["beta_d"]
+    # "Not robust for variations in x" is read as a small stability margin: the smallest
+    # change of the design factor that makes the loop unstable, ln of the factor at the
+    # nearer edge. It is located whenever that edge lies inside the grid. The width of the
+    # interval, ln(hi / lo), also counts the far edge, which is often past the grid's end
+    # (only a lower bound there); it is written beside the margin but does not decide.
+    margin, width, edges = {}, {}, {}
+    for n in (REFERENCE, *SENSITIVE):
+        ((d0, d1), lt), ((u0, u1), ht) = _sides(s, n)
+        margin[n] = (min(d0, u0), min(d1, u1))
+        width[n] = (d0 + u0, d1 + u1)
+        edges[n] = f"{lt} to {ht}"
+    ok = [_below(margin[n], margin[REFERENCE]) for n in SENSITIVE]
+    value = False if False in ok else (None if None in ok else True)
+    words = {True: "below", False: "not below", None: "not decidable against"}
+    by_width = [_below(width[n], width[REFERENCE]) for n in SENSITIVE]
     return Result(
-        bool(ok),
-        "log-width of the stable design-factor interval: "
-        + ", ".join(f"{k} {v:.3g}" for k, v in width.items()),
+        value,
+        "sensitivity read as the stability margin, the smallest change of the design factor "
+        "(real value 1) that makes the loop unstable, |natural log| of the factor at the nearer "
+        "edge of the stable interval (a variation meets that edge first; '>=': the edge is past "
+        "the grid's end, a bound): "
+        + ", ".join(f"{n} {_written(margin[n])} (edges {edges[n]})" for n in margin)
+        + "; "
+        + ", ".join(f"{n} {words[o]} {REFERENCE}" for n, o in zip(SENSITIVE, ok, strict=True))
+        + ". Not used for the verdict, the widths ln(hi / lo), which also count the far "
+        "edge ('>=': an edge is the grid's end, so a lower bound): "
+        + ", ".join(f"{n} {_written(width[n])}" for n in width)
+        + "; by width "
+        + ", ".join(
+            f"{n} {words[o]} {REFERENCE}" for n, o in zip(SENSITIVE, by_width, strict=True)
+        ),
     )
