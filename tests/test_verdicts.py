@@ -368,3 +368,31 @@ def test_a_qualitative_reading_must_state_its_chance():
     assert judge("d", pub, False, "", [lucky])["verdict"] == "mismatch"
     with pytest.raises(AbglibValueError, match="must give its chance"):
         judge("d", pub, False, "", [Reading("r", True, "s5")])
+
+
+@pytest.mark.parametrize(
+    "printed, bound, verdict",
+    [
+        # the antenna's p_a upper edge: stable to the grid's end 1.05, printed 1.005: the
+        # quantity is above 1.05, so 1.005 is not it (a digit-doubled reading of 1.05 would
+        # have 'explained' it)
+        ("1.005", ">", "mismatch"),
+        ("1.2", ">", "not_reproducible"),  # above the bound: may be the quantity
+        ("1.0505", ">", "not_reproducible"),  # within the tolerance of the bound
+        ("1.2", "<", "mismatch"),  # the quantity is below 1.05
+        ("0.9", "<", "not_reproducible"),
+    ],
+)
+def test_a_bound_is_judged_by_its_side_and_no_reading_is_tried(printed, bound, verdict):
+    row = judge("d", _pub("k", printed), 1.05, "stable to the grid's end", bound=bound)
+    assert row["verdict"] == verdict, row
+    assert row["reading"] == "" and row["chance"] is None
+    assert row["note"].startswith(f"the quantity lies {'above' if bound == '>' else 'below'} 1.05")
+    # without the bound, the same numbers are explained by a reading (digit doubled)
+    if printed == "1.005":
+        assert judge("d", _pub("k", printed), 1.05, "")["verdict"] == "explained"
+
+
+def test_a_bound_must_name_its_side():
+    with pytest.raises(AbglibValueError, match="bound must be"):
+        judge("d", _pub("k", "1.0"), 1.05, "", bound="above")

@@ -88,12 +88,17 @@ class Result:
     related : mapping
         Related quantities for the claim-specific reading families of
         :mod:`abglib.verdicts.readings` (``values``, ``neighbours``, ``dt``, ``inputs``).
+    bound : {"", ">", "<"}
+        ``">"`` (``"<"``) when ``value`` is only a bound the quantity lies above (below),
+        e.g. a stability edge past the end of the grid searched: judged without readings
+        (:func:`abglib.verdicts.judge`'s ``bound``).
     """
 
     value: Any
     note: str = ""
     readings: Sequence[Reading] = ()
     related: Mapping[str, Any] = field(default_factory=dict)
+    bound: str = ""
 
 
 # --------------------------------------------------------------------------- claims
@@ -680,7 +685,14 @@ def _judged(doc: str, pub, res: Result, overrides):
     """One row judged by the verdict engine (:mod:`abglib.verdicts`), with what the
     sentence rule needs."""
     return _assess(
-        doc, pub, res.value, res.note, _alternatives(pub.key, res), overrides, res.related
+        doc,
+        pub,
+        res.value,
+        res.note,
+        _alternatives(pub.key, res),
+        overrides,
+        res.related,
+        res.bound,
     )
 
 

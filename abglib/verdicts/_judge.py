@@ -117,6 +117,7 @@ def judge(
     alternatives=(),
     overrides=None,
     related: Mapping[str, Any] | None = None,
+    bound: str = "",
 ) -> dict:
     """One row of ``comparison.csv`` (without ``depends_on``; ``robust`` and ``vague``,
     the vague words judged across their range as ``('vague:about',)``, only when the
@@ -139,11 +140,26 @@ def judge(
     related : mapping, optional
         Related quantities for the claim-specific reading families
         (:mod:`abglib.verdicts.readings`).
+    bound : {"", ">", "<"}
+        ``">"`` (``"<"``): ``value`` is not the quantity but a bound on it, which lies
+        beyond (below) it, e.g. a stability edge past the end of the grid searched. The
+        row is then a ``mismatch`` when the printed number lies on the excluded side by
+        more than the tolerance, with no reading tried (a reading of a bound would explain
+        a number the quantity is known not to be), and ``not_reproducible`` when it lies
+        where the quantity may be.
     """
-    return _assess(doc, row, value, note, alternatives, overrides, related).row
+    return _assess(doc, row, value, note, alternatives, overrides, related, bound).row
 
 
-def _assess(doc, row, value, note, alternatives=(), overrides=None, related=None) -> _Judged:
+#: The sides a bound can give (:func:`judge`'s ``bound``), in words.
+BOUNDS = {">": "above", "<": "below"}
+
+
+def _assess(
+    doc, row, value, note, alternatives=(), overrides=None, related=None, bound=""
+) -> _Judged:
+    if bound and bound not in BOUNDS:
+        raise AbglibValueError(f"bound must be '', '>' or '<', got {bound!r}")
     overrides = overrides or {}
     note = _text(note)
     qualitative = not str(row.published).strip()
@@ -173,6 +189,8 @@ def _assess(doc, row, value, note, alternatives=(), overrides=None, related=None
         rel_err = abs_err / abs(pub) if pub != 0 else None
     if v == "not_reproducible" and not note:
         raise AbglibValueError(f"{doc}: not-reproducible key {row.key!r} needs a note saying why")
+    if bound and pub is not None:
+        return _bounded(doc, row, float(value), pub, tol, bound, note, out, abs_err, rel_err)
     vague_note = ""
     if pub is not None and row.key not in overrides:
         words = find_vague(f"{row.quantity} {row.item}")
@@ -247,6 +265,35 @@ def _assess(doc, row, value, note, alternatives=(), overrides=None, related=None
         **out,
     }
     return _Judged(out, explanation, tol, pub, readings)
+
+
+def _bounded(doc, row, value, pub, tol, bound, note, out, abs_err, rel_err) -> _Judged:
+    """A row whose reproduced ``value`` is a bound (:func:`judge`'s ``bound``)."""
+    side = BOUNDS[bound]
+    excluded = pub < value - tol if bound == ">" else pub > value + tol
+    where = (
+        f"the quantity lies {side} {format_number(value, NOTE_DIGITS)} (a bound, not its value)"
+    )
+    if excluded:
+        v = "mismatch"
+        text = f"{where}, and the printed {row.published} does not: no reading is tried on a bound"
+    else:
+        v = "not_reproducible"
+        text = f"{where}, where the printed {row.published} may lie: not decidable"
+    out = {
+        "doc": doc,
+        "item": row.item,
+        "quantity": row.quantity,
+        "published": row.published,
+        "reproduced": value,
+        "abs_err": abs_err,
+        "rel_err": rel_err,
+        "tolerance": tol,
+        "verdict": v,
+        "note": f"{text}. {note}" if note else text,
+        **out,
+    }
+    return _Judged(out, None, tol, pub, ())
 
 
 def _qualitative_reading(readings):

@@ -46,9 +46,9 @@ def _edge(s, key):
         lim = row["grid_min" if side == "lower" else "grid_max"]
         return Result(
             float(lim),
-            f"{EDGE_NOTE}; stable to the end of the grid, so the edge lies beyond {lim:g} "
-            f"('{'<' if side == 'lower' else '>'} {lim:g}'): reproduced is the grid's end, a "
-            "bound and not an edge, and abs_err only bounds the error (the edge is further out)",
+            f"{EDGE_NOTE}; stable to the end of the grid searched, so the edge lies beyond "
+            f"{lim:g}: reproduced is the grid's end, and abs_err only bounds the error",
+            bound="<" if side == "lower" else ">",
         )
     # the edge is located by brentq to 1e-6 relative (robustness.stable_interval): its digits
     # beyond that move with the BLAS kernel (6.5e-8 relative measured), so 5 are kept
