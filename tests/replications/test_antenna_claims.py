@@ -1109,3 +1109,27 @@ def test_off_optimum_estimation_errors_sine_or_noise_like(s):
     model, opt, meas = shares
     assert model > opt > meas
     assert value(s, "sec82.off_optimum_character") is True
+
+
+def test_p_a_edge_search_reaches_the_admissible_limit():
+    """At a plausible model (beta_a = 0.1) the loop is still stable at p_a's last grid
+    factor 1.05: the search goes on towards 1 / p_a and locates the edge (near 1.07), where
+    v0.4.5 had only the bound 1.05 (and read the printed 1.005 as a misprint of it)."""
+    import copy
+
+    from .conftest import repo_config
+
+    cfg = copy.deepcopy(repo_config())
+    cfg["antenna"]["parameters"]["beta_a"] = 0.1
+    s = study_for("antenna", cfg)
+    row = s.stability_of("p_a")
+    limit = 1.0 / s.params.p_a
+    assert 1.05 < row["upper"] < row["grid_max"] < limit
+    tol = s.cfg["robustness"]["radius_tolerance"]
+    assert (
+        radius(s, "p_a", row["upper"] * 0.999) <= 1 + tol < radius(s, "p_a", row["upper"] * 1.001)
+    )
+    # an independent route: the first factor above 1.05 on a fine scan that is unstable
+    scan = np.arange(1.05, limit, 1e-3)
+    first = next(f for f in scan if radius(s, "p_a", f) > 1 + tol)
+    assert abs(first - row["upper"]) <= 1e-3

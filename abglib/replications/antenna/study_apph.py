@@ -18,6 +18,7 @@ from .study_exact import log_grid
 __all__ = [
     "APPH_PARAMETERS",
     "design_error_rows",
+    "edge_grid",
     "factor_grid",
     "radius_rows",
     "stability_row",
@@ -31,6 +32,26 @@ def factor_grid(rb, params, name) -> np.ndarray:
     """Design factors: a coarse and a fine log grid and 1 (p_a kept below 1)."""
     grid = np.unique(np.concatenate([log_grid(rb["factors"]), log_grid(rb["fine"]), [1.0]]))
     return grid[grid * getattr(params, name) < 1.0] if name == "p_a" else grid
+
+
+#: Points the stability edge search adds to p_a's grid between its last factor and the
+#: admissible limit 1 / p_a (a design p_a >= 1 leaves the driver no inertia, p_d = 1 - p_a).
+EDGE_POINTS_P_A = 10
+
+
+def edge_grid(rb, params, name) -> np.ndarray:
+    """The design factors searched for the stability edges: :func:`factor_grid`, and for
+    p_a also :data:`EDGE_POINTS_P_A` evenly spaced factors up to (not at) the admissible
+    limit 1 / p_a. factor_grid stops p_a at the fine grid's 1.05, where the loop of some
+    plausible models is still stable (its edge there is near 1.07, default config): without
+    them the edge was only a bound at those models (v0.4.5 had "explained" the printed 1.005
+    there as a misprint of the bound 1.05; docs/releases.md)."""
+    grid = factor_grid(rb, params, name)
+    if name != "p_a":
+        return grid
+    limit = 1.0 / float(params.p_a)
+    extra = np.linspace(grid.max(), limit, EDGE_POINTS_P_A + 2)[1:-1]
+    return np.unique(np.concatenate([grid, extra]))
 
 
 def radius_rows(s, name) -> list[dict]:
@@ -73,9 +94,10 @@ def design_error_rows(s, name) -> list[dict]:
 
 
 def stability_row(s, name) -> dict:
-    """Edges of the stable factor interval around 1 (nan: stable to the end of the grid)."""
+    """Edges of the stable factor interval around 1 (nan: stable to the end of the grid,
+    :func:`edge_grid`)."""
     rb = s.cfg["robustness"]
-    g = factor_grid(rb, s.params, name)
+    g = edge_grid(rb, s.params, name)
     lo, hi = stable_interval(
         s.params, name, s.dt, s.q, s.r, 5, s.vw_filter(s.vw_opt5), s.vv, g,
         float(rb["radius_tolerance"]), radius=lambda f: s.radius(name, f),
