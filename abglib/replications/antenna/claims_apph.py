@@ -143,22 +143,42 @@ def _most(s):
         edges[n] = f"{lt} to {ht}"
     ok = [_below(margin[n], margin[REFERENCE]) for n in SENSITIVE]
     value = False if False in ok else (None if None in ok else True)
-    words = {True: "below", False: "not below", None: "not decidable against"}
+    words = {True: "is", False: "is not", None: "cannot be told to be"}
     by_width = [_below(width[n], width[REFERENCE]) for n in SENSITIVE]
+    printed = _printed_margins(s)
+    holds = all(printed[n] < printed[REFERENCE] for n in SENSITIVE)
     return Result(
         value,
-        "sensitivity read as the stability margin, the smallest change of the design factor "
-        "(real value 1) that makes the loop unstable, |natural log| of the factor at the nearer "
-        "edge of the stable interval (a variation meets that edge first; '>=': the edge is past "
-        "the grid's end, a bound): "
+        "sensitivity read as the stability margin, |ln| of the design factor at the nearer "
+        "edge of the stable interval (the edge a variation meets first; '>=': that edge lies "
+        "past the end of the grid searched): "
         + ", ".join(f"{n} {_written(margin[n])} (edges {edges[n]})" for n in margin)
         + "; "
-        + ", ".join(f"{n} {words[o]} {REFERENCE}" for n, o in zip(SENSITIVE, ok, strict=True))
-        + ". Not used for the verdict, the widths ln(hi / lo), which also count the far "
-        "edge ('>=': an edge is the grid's end, so a lower bound): "
-        + ", ".join(f"{n} {_written(width[n])}" for n in width)
-        + "; by width "
         + ", ".join(
-            f"{n} {words[o]} {REFERENCE}" for n, o in zip(SENSITIVE, by_width, strict=True)
-        ),
+            f"{n} {words[o]} more sensitive than {REFERENCE}"
+            for n, o in zip(SENSITIVE, ok, strict=True)
+        )
+        + ". On the printed edges (Figs I.20-I.22) the margins are "
+        + ", ".join(f"{n} {printed[n]:.3g}" for n in printed)
+        + f" and the claim {'holds' if holds else 'does not hold'} there"
+        + (
+            ": the disagreement is in the reconstructed windows (the Fig. I.20-I.22 rows)"
+            if holds and value is False
+            else ""
+        )
+        + ". The widths ln(hi / lo) "
+        + ("decide the same" if by_width == ok else "do not decide it")
+        + " ("
+        + ", ".join(f"{n} {_written(width[n])}" for n in width)
+        + ")",
     )
+
+
+def _printed_margins(s) -> dict[str, float]:
+    """The stability margins of the printed edges (Figs I.20-I.22; beta_d's window is
+    printed from 0 up to 4, so only its upper edge counts)."""
+    out = {}
+    for n in (REFERENCE, *SENSITIVE):
+        edges = [float(s.printed(key)) for key, (name, _) in EDGES.items() if name == n]
+        out[n] = min(abs(float(np.log(e))) for e in edges)
+    return out
