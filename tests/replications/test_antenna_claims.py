@@ -353,7 +353,7 @@ def test_high_order_small_error(s):
     # a negative change is not called an increase, and the bound on 'almost zero' says
     # where it comes from and over which bounds the verdict holds
     assert "relative change of the max error" in note and "increase over" not in note
-    assert "'nearly equals' ratio below 2 of sec. 6.2" in note
+    assert "'nearly equals' ratio below 2 of the source's sec. 6.2" in note
     assert "holds for any positive bound on the increase" in note
 
 

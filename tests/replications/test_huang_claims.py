@@ -598,7 +598,7 @@ def test_eq13_note_gives_printed_and_nominal_ranges_apart(study):
 def test_type1_alpha_note_says_alpha_is_xi(study, base):
     xi = ROWS.loc[f"{base}.xi", "published"]
     res = result(study, f"{base}.alpha")
-    assert "under type I alpha = xi" in res.note and "cannot explain alpha" in res.note
+    assert "under type I alpha = xi" in res.note and "its mismatch is the xi row's" in res.note
     assert f"printed xi = {float(xi):g} gives alpha = {float(xi):g}" in res.note
     assert res.readings == ()
     # the sibling beta row keeps the reading (and its plain note)
@@ -640,7 +640,10 @@ def test_overshoot_note_writes_an_exact_zero_as_no_overshoot(study):
 def test_partial_fractions_note_names_the_one_set_left_out(study):
     note = result(study, "eq12.partial_fractions").note
     assert "9 of the 10" in note
-    assert "(the other, the rule's gains of the nominal ENBW for t2.abg.2hz, has repeated" in note
+    assert (
+        "(the other, the rule's gains of the nominal ENBW for Table 2's alpha-beta-gamma 2 Hz "
+        "set, has repeated" in note
+    )
     assert "the others have" not in note
 
 

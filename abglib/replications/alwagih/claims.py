@@ -109,11 +109,9 @@ def _t12(s, key):
     table = key.split(".")[0]
     return Result(
         None,
-        "an absolute RMSE on a trajectory that seed 001 does not give (nor its noise level, "
-        "alpha_0, M4 window or M5 bank), so no reconstruction can reproduce it and the "
-        "verdict rests on no assumed input and no random draw; the reconstruction's RMSE of "
-        f"this cell, which depends on all of them, is in table{table[1]}.csv (the run that "
-        "plays the paper's single realisation) and mc_rmse.csv (Monte Carlo mean and 95% CI)",
+        "an absolute RMSE of a trajectory the paper does not give (nor its noise level, "
+        "alpha_0, M4 window or M5 bank): no reconstruction can reproduce it; the "
+        f"reconstruction's values of this cell are in table{table[1]}.csv and mc_rmse.csv",
     )
 
 
@@ -361,7 +359,8 @@ def _size(s, key):
             f"({' and '.join(text for _, text, _ in bad)}): "
             f"{'their' if plural else 'its'} printed {' and '.join(w for _, _, w in bad)} "
             f"{'are' if plural else 'is'} not what that table gives, within its rounding or "
-            f"by any reading (row{'s' * plural} Table {t}, experiment {es}, {coord}, {m}: "
+            f"by any reading tried (row{'s' * plural} Table {t}, experiment {es}, {coord}, "
+            f"{m}: "
             "mismatch); with "
             f"the printed entries the range is {min(printed):g} .. {max(printed):g} %"
         )

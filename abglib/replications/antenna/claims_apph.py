@@ -46,8 +46,8 @@ def _edge(s, key):
         lim = row["grid_min" if side == "lower" else "grid_max"]
         return Result(
             float(lim),
-            f"{EDGE_NOTE}; stable to the end of the grid searched, so the edge lies beyond "
-            f"{lim:g}: reproduced is the grid's end, and abs_err only bounds the error",
+            f"{EDGE_NOTE}; stable to the end of the grid searched: reproduced is the grid's "
+            "end, and abs_err is a lower bound on the error",
             bound="<" if side == "lower" else ">",
         )
     # the edge is located by brentq to 1e-6 relative (robustness.stable_interval): its digits

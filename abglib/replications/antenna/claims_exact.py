@@ -435,9 +435,12 @@ def _high_order_small(s):
     def pct(x):
         return f"{round(100 * x, 2) + 0.0:.2f} %"
 
-    bound = f"below {100 * (thr - 1):g} % (the 'nearly equals' ratio below {thr:g} of sec. 6.2)"
+    bound = (
+        f"below {100 * (thr - 1):g} % (the 'nearly equals' ratio below {thr:g} of the source's "
+        "sec. 6.2)"
+    )
     holds = (
-        f"so the {q} error is nowhere above the known-output error and 'almost zero' holds "
+        f"so there the {q} error is not above the known-output error and 'almost zero' holds "
         f"for any positive bound on the increase; the bound applied is {bound}"
         if inc <= 0
         else f"'almost zero' read as an increase {bound}; it holds for any bound above {pct(inc)}"

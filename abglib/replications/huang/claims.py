@@ -62,6 +62,13 @@ _EQ5_COUNTER = (0.1, 0.01, 0.1)
 #: Alpha-beta gains that satisfy eq 7 but are unstable (alpha > 2; alpha < 0).
 _EQ7_COUNTER = ((3.0, 0.1), (-0.05, 0.5))
 _SECTION_TABLES = "4. Tables 1-2 row by row"
+def _cell_words(cell: str) -> str:
+    """A table cell's id in words: ``'t2.abg.2hz'`` -> ``"Table 2's alpha-beta-gamma 2 Hz set"``."""
+    t, kind, hz = cell.split(".")
+    name = {"ab": "alpha-beta", "abg": "alpha-beta-gamma"}[kind]
+    return f"Table {t[1:]}'s {name} {hz[:-2]} Hz set"
+
+
 #: The routes table's gain sets (column ``gains``), in words.
 _GAIN_SETS = {"printed": "the printed gains", "nominal": "the rule's gains of the nominal ENBW"}
 
@@ -117,8 +124,8 @@ def _table_cell(s: HuangStudy, key: str) -> Result:
             eq, jury = (
                 "eq 5",
                 (
-                    "seed 000 eq 47, canonical gamma = 2 gamma_H: alpha beta + alpha gamma/2 - "
-                    f"gamma = {format_number(r['jury_eq47'], 3)}, needs > 0"
+                    "Steelman 1978 eq 47, canonical gamma = 2 gamma_H: alpha beta + alpha "
+                    f"gamma/2 - gamma = {format_number(r['jury_eq47'], 3)}, needs > 0"
                 ),
             )
         else:
@@ -126,7 +133,7 @@ def _table_cell(s: HuangStudy, key: str) -> Result:
             eq, jury = (
                 "eq 7",
                 (
-                    f"seed 000 eqs 42-44: alpha = {format_number(a, 3)} > 0, beta = "
+                    f"Steelman 1978 eqs 42-44: alpha = {format_number(a, 3)} > 0, beta = "
                     f"{format_number(b, 3)} > 0, 2 alpha + beta = {format_number(2 * a + b, 3)} < 4"
                 ),
             )
@@ -145,8 +152,8 @@ def _table_cell(s: HuangStudy, key: str) -> Result:
         note = (
             f"under type I alpha = xi, so the rule at the printed xi = {r['xi_printed']:g} "
             f"gives alpha = {r[f'rule_{col}']:.4g} (ENBW {r['rule_enbw']:.4g} Hz) by "
-            "definition: that reading only restates the printed xi and cannot explain alpha "
-            "(see the xi row)"
+            "definition, so alpha only repeats the printed xi and its mismatch is the xi "
+            "row's: the reading that explains beta is no evidence here"
         )
     else:
         note = (
@@ -306,7 +313,8 @@ def _eq12(s: HuangStudy) -> Result:
     rel = float(np.max(np.abs(ok["eq11_12_reconstructed"] / ok["exact_lyapunov"] - 1.0)))
     rest = abg[abg["eq11_12_reconstructed"].isna()]
     names = ", ".join(
-        f"{_GAIN_SETS[g]} for {c}" for c, g in zip(rest["cell"], rest["gains"], strict=True)
+        f"{_GAIN_SETS[g]} for {_cell_words(c)}"
+        for c, g in zip(rest["cell"], rest["gains"], strict=True)
     )
     others = (
         f"(the other, {names}, has repeated roots, "
