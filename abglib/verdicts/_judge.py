@@ -251,49 +251,41 @@ def _assess(
         note = f"{vague_note}. {note}" if note else vague_note
     if tol_note:
         note = f"{note}; {tol_note}" if note else tol_note
-    out = {
+    out = _row(doc, row, _reproduced_value(value, qualitative), abs_err, rel_err, tol, v, note, out)
+    return _Judged(out, explanation, tol, pub, readings)
+
+
+def _row(doc, row, reproduced, abs_err, rel_err, tol, verdict, note, extra) -> dict:
+    """One row of ``comparison.csv`` as the judge returns it (``extra``: reading, chance,
+    and robust/vague when the printed text carries a vague word)."""
+    return {
         "doc": doc,
         "item": row.item,
         "quantity": row.quantity,
         "published": row.published,
-        "reproduced": _reproduced_value(value, qualitative),
+        "reproduced": reproduced,
         "abs_err": abs_err,
         "rel_err": rel_err,
         "tolerance": tol,
-        "verdict": v,
+        "verdict": verdict,
         "note": note,
-        **out,
+        **extra,
     }
-    return _Judged(out, explanation, tol, pub, readings)
 
 
 def _bounded(doc, row, value, pub, tol, bound, note, out, abs_err, rel_err) -> _Judged:
     """A row whose reproduced ``value`` is a bound (:func:`judge`'s ``bound``)."""
     side = BOUNDS[bound]
     excluded = pub < value - tol if bound == ">" else pub > value + tol
-    where = (
-        f"the quantity lies {side} {format_number(value, NOTE_DIGITS)} (a bound, not its value)"
-    )
+    where = f"the quantity lies {side} {format_number(value, NOTE_DIGITS)} (a bound, not its value)"
     if excluded:
         v = "mismatch"
         text = f"{where}, and the printed {row.published} does not: no reading is tried on a bound"
     else:
         v = "not_reproducible"
         text = f"{where}, where the printed {row.published} may lie: not decidable"
-    out = {
-        "doc": doc,
-        "item": row.item,
-        "quantity": row.quantity,
-        "published": row.published,
-        "reproduced": value,
-        "abs_err": abs_err,
-        "rel_err": rel_err,
-        "tolerance": tol,
-        "verdict": v,
-        "note": f"{text}. {note}" if note else text,
-        **out,
-    }
-    return _Judged(out, None, tol, pub, ())
+    note = f"{text}. {note}" if note else text
+    return _Judged(_row(doc, row, value, abs_err, rel_err, tol, v, note, out), None, tol, pub, ())
 
 
 def _qualitative_reading(readings):
