@@ -851,3 +851,42 @@ def test_a_range_with_a_negative_end_reads_as_a_range():
     assert flip == (
         "d.s (plausible -74.9 to 30, nominal 0): match at -74.9 to -30, mismatch at 0-30"
     )
+
+
+PUB_NONE = pd.DataFrame(
+    [
+        ("none.always", "p. 7", "an RMSE of a trajectory the text does not give", "4.2", "p. 7"),
+        ("none.nominal", "p. 8", "a value the nominal inputs cannot give", "1.0", "p. 8"),
+    ],
+    columns=["key", "item", "quantity", "published", "where"],
+)
+NONE_CLAIMS = ClaimSet("toy")
+
+
+@NONE_CLAIMS.claim("none.always", depends_on=("toy.a",))
+def _none_always(s):
+    # no value anywhere, though the note moves with the input and the seeds
+    return Result(None, f"not given; the reconstruction's is {s.cfg['a'] * s.mc_mean:.3f}")
+
+
+@NONE_CLAIMS.claim("none.nominal", depends_on=("toy.a",))
+def _none_nominal(s):
+    # no value at a = 1 only: elsewhere a value, which can be judged
+    return Result(None if s.cfg["a"] == 1.0 else 1.0, "defined off the nominal input")
+
+
+def test_a_row_with_no_value_anywhere_is_neither_robust_nor_fragile():
+    """Al-Wagih's 100 absolute-RMSE rows were 'robust' (depends_on 'seeds') because their
+    notes quoted Monte Carlo values, though no input or draw could change their verdict."""
+    cfg = config()
+    comp, points = evaluate(
+        "toy", NONE_CLAIMS, PUB_NONE, Toy(cfg, PUB_NONE), lambda c: Toy(c, PUB_NONE)
+    )
+    rows = comp.set_index("item")
+    always = rows.loc["p. 7"]
+    assert always["verdict"] == "not_reproducible"
+    assert always["depends_on"] == "" and always["robust"] == ""
+    assert (points["key"] == "none.always").any()  # the sweep ran and is kept as evidence
+    # a value somewhere: the row hinges on the input, and says so
+    nominal = rows.loc["p. 8"]
+    assert nominal["depends_on"] == "toy.a" and nominal["robust"] == "false"

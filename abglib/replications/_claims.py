@@ -506,6 +506,7 @@ def evaluate(
     rows, points, judged = [], [], []
     for pub in published.itertuples(index=False):
         claim = resolved[pub.key]
+        first_point = len(points)
         res = claim.run(study, pub.key)
         judged.append(_judged(doc, pub, res, overrides))
         row = judged[-1].row
@@ -667,11 +668,23 @@ def evaluate(
                 row["note"] = "; ".join(
                     x for x in (row["note"], f"under chance it {lucky.describe()}") if x
                 )
+        if _missing(row["reproduced"]) and all(
+            _missing(p["reproduced"]) for p in points[first_point:]
+        ):
+            # no value at the nominal inputs, at any point or under any seed set: nothing
+            # an input or a draw could change, so neither robust nor fragile
+            # (shared/CONTRACTS.md section 3: robust is empty when depends_on is)
+            row["depends_on"] = row["robust"] = ""
         rows.append(row)
     sentences = published[SENTENCE_COLUMN] if SENTENCE_COLUMN in published else [""] * len(rows)
     rows = judge_sentences(judged, list(sentences))
     comparison = pd.DataFrame(rows, columns=COMPARISON_COLUMNS)
     return comparison, pd.DataFrame(points, columns=ROBUSTNESS_COLUMNS)
+
+
+def _missing(x) -> bool:
+    """No reproduced value: ``None`` or NaN."""
+    return x is None or (isinstance(x, float) and math.isnan(x))
 
 
 def _alternatives(key: str, res: Result) -> list[Alternative]:
