@@ -54,7 +54,7 @@ from ._checks import AbglibValueError
 from .engine import TrackResult, track
 from .gains import Gains
 
-__version__ = "0.4.7"
+__version__ = "0.4.8"
 
 __all__ = ["AbglibValueError", "Gains", "TrackResult", "__version__", "track"]
 
