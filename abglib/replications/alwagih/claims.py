@@ -98,13 +98,10 @@ def _expected_positive(base: str, coord: str, method: str) -> bool:
 def _t12(s, key):
     """An absolute RMSE of Table 1 or 2: not reproducible whatever the reconstruction.
 
-    The row has no value, so its verdict rests on no assumed input and no random draw:
-    ``depends_on`` and ``robust`` stay empty (``shared/CONTRACTS.md`` section 3). The note
-    is therefore the same under every seed set and at every plausible input (a note
-    quoting the Monte Carlo values moved with the seeds, which made the row a Monte Carlo
-    row, ``depends_on`` ``seeds``, ``robust`` ``true``: 100 rows counted robust whose
-    verdict cannot flip). The reconstruction's values of the cell, which do depend on
-    the inputs and the draws, are in ``table1.csv``/``table2.csv`` and ``mc_rmse.csv``.
+    The row has no value anywhere, so ``evaluate`` leaves ``depends_on`` and ``robust``
+    empty (``shared/CONTRACTS.md`` section 3). The note names where the reconstruction's
+    values of the cell are (``table1.csv``/``table2.csv`` and ``mc_rmse.csv``) rather than
+    quoting them: they move with the inputs and the draws, the row's verdict does not.
     """
     table = key.split(".")[0]
     return Result(
