@@ -17,6 +17,8 @@ Where inputs are perturbed (the chokepoints every number of a table flows throug
 - :class:`abglib.Gains` (``alpha``, ``beta``, ``gamma``): every tracker, closed form and
   numeric twin;
 - :func:`abglib.track`: the measurements ``z`` and ``dt`` (every Monte Carlo result);
+- :mod:`abglib.methods` (seed 001's M1-M5): the measurements ``z`` and ``dt``, where M4 runs a
+  recursion of its own and never reaches :func:`abglib.track`;
 - :func:`abglib.replications.antenna.discretize.zoh`: the continuous model matrices and
   the sampling period of seed 004 (every LQ, Lyapunov and Kalman result).
 

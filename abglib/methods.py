@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import AbglibValueError, as_float_array, check_in_range, check_positive
+from ._perturb import perturb
 from .design import benedict_bordner, growing_memory
 from .engine import track
 from .gains import Gains
@@ -87,7 +88,10 @@ def beta_eq23b(alpha):
 
 
 def _z(z) -> np.ndarray:
-    z = as_float_array("z", z)
+    # perturbed arithmetic (ABGLIB_PERTURB, abglib._perturb; a no-op in a plain build): M4
+    # runs its own recursion and never reaches abglib.track, where the other methods' z is
+    # perturbed (idempotent: perturbing it twice is perturbing it once)
+    z = perturb(as_float_array("z", z))
     if z.ndim == 0 or z.shape[-1] < 3:
         raise AbglibValueError(
             f"z must have a time axis of at least 3 samples (two-point initialisation, "
@@ -102,7 +106,7 @@ def _dt(dt) -> float:
     arr = check_positive("dt", dt)
     if arr.ndim:
         raise AbglibValueError(f"dt must be a scalar for the seed 001 methods, got {arr.shape}")
-    return float(arr)
+    return float(perturb(arr))  # as abglib.track perturbs it (M4's own recursion)
 
 
 def _grid(name: str, values, low, high, low_inclusive=False, high_inclusive=True):

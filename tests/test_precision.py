@@ -101,6 +101,29 @@ def test_perturbed_build_moves_gains_and_tracks_by_round_off(monkeypatch):
     assert 0 < dev < 1e-11
 
 
+def test_m4s_own_recursion_takes_the_perturbation(monkeypatch):
+    """M4 (seed 001, Algorithm 2) runs a recursion of its own and never reaches track(): its
+    measurements and dt are perturbed where the methods read them (abglib.methods._z,
+    _dt), as track() perturbs them. Under perturbation M4 equals M4 given the perturbed
+    measurements by hand (idempotent), and moves from the plain M4."""
+    from abglib import methods
+
+    z = np.cumsum(np.random.default_rng(2).normal(size=(3, 80)), axis=-1)
+    grid = np.linspace(0.05, 1.0, 20)
+    plain = methods.m4(z, 0.1, 10, grid, 0.5).x_pred
+    monkeypatch.setenv(ENV, "5")
+    moved = methods.m4(z, 0.1, 10, grid, 0.5).x_pred
+    assert not np.array_equal(moved, plain)
+    assert np.max(np.abs(moved - plain) / np.maximum(np.abs(plain), 1.0)) < 1e-11
+    by_hand = methods.m4(perturb(z), 0.1, 10, grid, perturb_scalar(0.5)).x_pred
+    np.testing.assert_array_equal(moved, by_hand)
+    # the methods that call track() are perturbed once, not twice: M1 under perturbation
+    # equals track() on the same inputs under perturbation
+    m1 = methods.m1(z, 0.3, 0.5).x_pred
+    ref = abglib.track(z, methods.benedict_bordner(0.3), dt=0.5, init="two_point").x_pred
+    np.testing.assert_array_equal(m1, ref)
+
+
 # --------------------------------------------------------------------------- specs
 def _runs(x, *deltas):
     x = np.asarray(x, float)
