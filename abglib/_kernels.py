@@ -396,3 +396,78 @@ def run2_par(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
             _block2(k * LANES, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
         else:
             _one2(nblk * (LANES - 1) + k, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
+
+
+# --------------------------------------------------------------------------- gain banks
+#: the most values :func:`_pairwise_sum` adds (numpy's block: above it numpy sums halves)
+PAIRWISE_BLOCK = 128
+
+
+@njit(cache=True)
+def _pairwise_sum(a, lo, n):
+    """numpy's sum of ``a[lo:lo + n]``, ``n <= PAIRWISE_BLOCK``, to the bit: its pairwise
+    summation (eight running sums, then the rest; ``np.add.reduce`` of a contiguous row,
+    starting from 0), so that a cost summed here ranks grid points exactly as ``np.mean``
+    of the array form did (tests/test_methods.py). Not recursive (numpy's halves above the
+    block): numba's cache of a recursive loop crashed the process that loaded it."""
+    if n < 8:
+        res = 0.0
+        for i in range(n):
+            res += a[lo + i]
+        return res
+    r0, r1, r2, r3 = a[lo], a[lo + 1], a[lo + 2], a[lo + 3]
+    r4, r5, r6, r7 = a[lo + 4], a[lo + 5], a[lo + 6], a[lo + 7]
+    i = 8
+    while i < n - n % 8:
+        j = lo + i
+        r0, r1, r2, r3 = r0 + a[j], r1 + a[j + 1], r2 + a[j + 2], r3 + a[j + 3]
+        r4, r5, r6, r7 = r4 + a[j + 4], r5 + a[j + 5], r6 + a[j + 6], r7 + a[j + 7]
+        i += 8
+    res = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+    while i < n:
+        res += a[lo + i]
+        i += 1
+    return res
+
+
+@njit(cache=True, nogil=True)
+def best_of_bank2(z, alpha, beta, T, xp, best):
+    """Seed 001's M3 search (:func:`abglib.methods.m3`) over a bank of g alpha-beta
+    trackers whose gains change along time, ``alpha`` (n,) shared and ``beta`` (g, n), on
+    every series of ``z`` (b, n): each tracker two-point initialised and run by the
+    arithmetic of :func:`series2` (what :func:`abglib.track` runs for such gains) with
+    ``dt = T`` and every sample detected, the whole bank sample by sample (independent
+    recursions: their steps overlap instead of waiting on one another); the cost of each,
+    the mean squared innovation from sample 2, as ``np.mean`` sums it
+    (:func:`_pairwise_sum`); the first tracker of least cost (numpy's ``argmin``: the
+    first NaN if any) into ``best`` (b,) and its predictions into ``xp`` (b, n). Series of
+    at most ``PAIRWISE_BLOCK + 2`` samples."""
+    g = beta.shape[0]
+    nb, n = z.shape
+    x, v = np.empty(g), np.empty(g)
+    row = np.empty((n, g))  # one series' predictions, the bank innermost
+    sq = np.empty(max(n - 2, 0))
+    for s in range(nb):
+        z0, z1 = z[s, 0], z[s, min(1, n - 1)]
+        for i in range(min(2, n)):
+            x0, v0, _ = _point(z0, z1, z0, T, T, i)
+            for q in range(g):
+                x[q], v[q], row[i, q] = x0, v0, z[s, i]
+        for i in range(2, n):
+            zi, al = z[s, i], alpha[i]
+            for q in range(g):
+                row[i, q], x[q], v[q] = _step2(x[q], v[q], zi, True, T, al, beta[q, i] / T)
+        k, low = 0, 0.0
+        for q in range(g):
+            for i in range(2, n):
+                d = z[s, i] - row[i, q]
+                sq[i - 2] = d * d
+            cost = _pairwise_sum(sq, 0, n - 2) / (n - 2)
+            if q == 0 or cost < low:
+                k, low = q, cost
+            if np.isnan(cost):
+                k = q
+                break
+        best[s] = k
+        for i in range(n):
+            xp[s, i] = row[i, k]

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from abglib import AbglibValueError, methods
+from abglib import AbglibValueError, Gains, methods
 
 RNG = np.random.default_rng(20240601)
 
@@ -286,6 +286,52 @@ def test_m4_kernel_equals_the_array_form_bit_for_bit(shape, window, dt):
     xp, used = _m4_array_form(z, 0.1, window, grid, dt)
     np.testing.assert_array_equal(got.x_pred, xp)
     np.testing.assert_array_equal(got.param, used)
+
+
+def _m3_array_form(z, grid, dt):
+    """M3 as the array program it was before its kernel (the bit-for-bit reference): the
+    bank through track(), the costs by np.mean, the choice by np.argmin."""
+    from abglib.engine import track
+
+    n = z.shape[-1]
+    g = methods.m3_gains(n, grid)
+    shape = (grid.size,) + (1,) * (z.ndim - 1) + (n,)
+    bank = track(z, Gains(g.alpha, g.beta.reshape(shape)), dt=dt, init="two_point").x_pred
+    best = np.argmin(np.mean((z - bank)[..., 2:] ** 2, axis=-1), axis=0)
+    return np.take_along_axis(bank, best[None, ..., None], axis=0)[0], grid[best]
+
+
+@pytest.mark.parametrize(
+    "shape, dt",
+    # n - 2 below 8, within numpy's pairwise block of 128, at its end, beyond (array form)
+    [
+        ((3, 4, 60), 1.0),
+        ((80,), 0.37),
+        ((5, 9), 2.0),
+        ((2, 3), 1.0),
+        ((2, 130), 1.0),
+        ((4, 300), 0.5),
+    ],
+)
+def test_m3_kernel_equals_the_array_form_bit_for_bit(shape, dt):
+    rng = np.random.default_rng(13)
+    z = np.cumsum(rng.standard_normal(shape), axis=-1) * 10 + rng.standard_normal(shape)
+    # a repeated weight ties: the first of the two, as np.argmin
+    for grid in (np.linspace(0.0, 1.0, 21), np.array([0.3, 0.3, 0.0, 1.0])):
+        got = methods.m3(z, grid, dt)
+        xp, w = _m3_array_form(z, grid, dt)
+        np.testing.assert_array_equal(got.x_pred, xp)
+        np.testing.assert_array_equal(got.param, w)
+        assert got.x_pred.shape == z.shape and got.param.shape == z.shape[:-1]
+
+
+def test_pairwise_sum_is_numpys_sum_to_the_bit():
+    from abglib._kernels import PAIRWISE_BLOCK, _pairwise_sum
+
+    rng = np.random.default_rng(17)
+    for n in range(PAIRWISE_BLOCK + 1):
+        a = rng.standard_normal(n + 3) ** 2 * rng.lognormal(0.0, 3.0)
+        assert _pairwise_sum(a, 3, n) == np.sum(a[3:]), n
 
 
 def _m5_array_form(z, grid, dt, causal, memory):
