@@ -398,38 +398,97 @@ def run2_par(z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs):
             _one2(nblk * (LANES - 1) + k, z, rz, prm, st, npoints, det, rd, has_det, outs, w, zs)
 
 
-# --------------------------------------------------------------------------- gain banks
-#: the most values :func:`_pairwise_sum` adds (numpy's block: above it numpy sums halves)
-PAIRWISE_BLOCK = 128
-
-
-@njit(cache=True)
-def _pairwise_sum(a, lo, n):
-    """numpy's sum of ``a[lo:lo + n]``, ``n <= PAIRWISE_BLOCK``, to the bit: its pairwise
-    summation (eight running sums, then the rest; ``np.add.reduce`` of a contiguous row,
-    starting from 0), so that a cost summed here ranks grid points exactly as ``np.mean``
-    of the array form did (tests/test_methods.py). Not recursive (numpy's halves above the
-    block): numba's cache of a recursive loop crashed the process that loaded it."""
+# --------------------------------------------------------------------------- numpy's sums
+# numpy's pairwise summation to the bit (np.add.reduce of a contiguous row): the compiled
+# loops that replace an array form and must give its bits sum in its order (the M3 search
+# below; the benchmark metrics, abglib.bench._metric_kernels; tests/test_metrics.py and
+# tests/test_methods.py compare them with numpy)
+@njit(cache=True, nogil=True)
+def pairwise_leaf(a, lo, n):
+    """numpy's ``pairwise_sum`` of ``a[lo:lo+n]`` for ``n <= 128`` (8 accumulators)."""
+    v = a[lo : lo + n]  # a view indexed from 0: the loop vectorises
     if n < 8:
         res = 0.0
         for i in range(n):
-            res += a[lo + i]
+            res += v[i]
         return res
-    r0, r1, r2, r3 = a[lo], a[lo + 1], a[lo + 2], a[lo + 3]
-    r4, r5, r6, r7 = a[lo + 4], a[lo + 5], a[lo + 6], a[lo + 7]
-    i = 8
-    while i < n - n % 8:
-        j = lo + i
-        r0, r1, r2, r3 = r0 + a[j], r1 + a[j + 1], r2 + a[j + 2], r3 + a[j + 3]
-        r4, r5, r6, r7 = r4 + a[j + 4], r5 + a[j + 5], r6 + a[j + 6], r7 + a[j + 7]
-        i += 8
+    r0, r1, r2, r3 = v[0], v[1], v[2], v[3]
+    r4, r5, r6, r7 = v[4], v[5], v[6], v[7]
+    m = n - (n % 8)
+    for i in range(8, m, 8):
+        r0 += v[i]
+        r1 += v[i + 1]
+        r2 += v[i + 2]
+        r3 += v[i + 3]
+        r4 += v[i + 4]
+        r5 += v[i + 5]
+        r6 += v[i + 6]
+        r7 += v[i + 7]
     res = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
-    while i < n:
-        res += a[lo + i]
-        i += 1
+    for i in range(m, n):
+        res += v[i]
     return res
 
 
+@njit(cache=True, nogil=True)
+def pairwise_tree(a, lo, n, wi, wf, mode, plan):
+    """numpy's pairwise sum of ``n`` values (``DOUBLE_pairwise_sum``: ``sum(v[:h]) +
+    sum(v[h:])`` with ``h`` half of ``n`` rounded down to a multiple of 8, leaves of at
+    most 128 values), on an explicit stack in the workspace ``wi``, ``wf``
+    (:func:`pairwise_workspace`; numba's disk cache does not reload self-recursive functions
+    safely). The leaves come left to right; ``mode`` says what a leaf is:
+
+    * 0: the values ``a[lo:lo+n]`` themselves (returns the sum);
+    * 1: the next entry of ``a``, a leaf's sum computed beforehand (returns the sum);
+    * 2: write each leaf's length to ``plan`` (returns the number of leaves).
+    """
+    sp = 0
+    wi[0, 0], wi[1, 0], wi[2, 0] = lo, n, 0
+    ret = 0.0
+    idx = 0
+    while sp >= 0:
+        fl, fn, stage = wi[0, sp], wi[1, sp], wi[2, sp]
+        if stage == 0 and fn <= 128:
+            if mode == 0:
+                ret = pairwise_leaf(a, fl, fn)
+            elif mode == 1:
+                ret = a[idx]
+            else:
+                plan[idx] = fn
+            idx += 1
+            sp -= 1
+            continue
+        h = fn // 2
+        h -= h % 8
+        if stage == 0:  # descend into the left half
+            wi[2, sp] = 1
+            sp += 1
+            wi[0, sp], wi[1, sp], wi[2, sp] = fl, h, 0
+        elif stage == 1:  # left half done (ret): keep it, descend into the right half
+            wf[sp] = ret
+            wi[2, sp] = 2
+            sp += 1
+            wi[0, sp], wi[1, sp], wi[2, sp] = fl + h, fn - h, 0
+        else:  # both halves done
+            ret = wf[sp] + ret
+            sp -= 1
+    return float(idx) if mode == 2 else ret
+
+
+@njit(cache=True, nogil=True)
+def pairwise_sum(a, lo, n, wi, wf):
+    """numpy's pairwise sum of the 1-D contiguous ``a[lo:lo+n]`` (:func:`pairwise_tree`)."""
+    if n <= 128:
+        return pairwise_leaf(a, lo, n)
+    return pairwise_tree(a, lo, n, wi, wf, 0, wi[0])
+
+
+def pairwise_workspace():
+    """The stack of :func:`pairwise_sum` (64 levels: halving 2**63 values reaches a leaf)."""
+    return np.zeros((3, 64), dtype=np.int64), np.zeros(64)
+
+
+# --------------------------------------------------------------------------- gain banks
 @njit(cache=True, nogil=True)
 def best_of_bank2(z, alpha, beta, T, xp, best):
     """Seed 001's M3 search (:func:`abglib.methods.m3`) over a bank of g alpha-beta
@@ -439,14 +498,14 @@ def best_of_bank2(z, alpha, beta, T, xp, best):
     ``dt = T`` and every sample detected, the whole bank sample by sample (independent
     recursions: their steps overlap instead of waiting on one another); the cost of each,
     the mean squared innovation from sample 2, as ``np.mean`` sums it
-    (:func:`_pairwise_sum`); the first tracker of least cost (numpy's ``argmin``: the
-    first NaN if any) into ``best`` (b,) and its predictions into ``xp`` (b, n). Series of
-    at most ``PAIRWISE_BLOCK + 2`` samples."""
+    (:func:`pairwise_sum`); the first tracker of least cost (numpy's ``argmin``: the
+    first NaN if any) into ``best`` (b,) and its predictions into ``xp`` (b, n)."""
     g = beta.shape[0]
     nb, n = z.shape
     x, v = np.empty(g), np.empty(g)
     row = np.empty((n, g))  # one series' predictions, the bank innermost
     sq = np.empty(max(n - 2, 0))
+    wi, wf = np.zeros((3, 64), dtype=np.int64), np.zeros(64)  # pairwise_workspace()
     for s in range(nb):
         z0, z1 = z[s, 0], z[s, min(1, n - 1)]
         for i in range(min(2, n)):
@@ -462,7 +521,7 @@ def best_of_bank2(z, alpha, beta, T, xp, best):
             for i in range(2, n):
                 d = z[s, i] - row[i, q]
                 sq[i - 2] = d * d
-            cost = _pairwise_sum(sq, 0, n - 2) / (n - 2)
+            cost = pairwise_sum(sq, 0, n - 2, wi, wf) / (n - 2)
             if q == 0 or cost < low:
                 k, low = q, cost
             if np.isnan(cost):

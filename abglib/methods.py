@@ -234,16 +234,10 @@ def m3(z, w_grid, dt=1.0) -> MethodResult:
     grid = _grid("w_grid", w_grid, 0.0, 1.0, low_inclusive=True)
     n = z.shape[-1]
     g = m3_gains(n, grid)
-    from ._kernels import PAIRWISE_BLOCK, best_of_bank2, read_only
+    # the grid's trackers, their costs and the choice in one kernel: the bits of track()
+    # and of np.argmin(np.mean(...)) on the bank (tests/test_methods.py), without the bank
+    from ._kernels import best_of_bank2, read_only
 
-    if n - 2 > PAIRWISE_BLOCK:  # the array form: the bank, its costs, the choice
-        shape = (grid.size,) + (1,) * (z.ndim - 1)
-        bank = _pred(z, Gains(g.alpha, g.beta.reshape(shape + (n,))), dt)  # (g, ..., n)
-        best = np.argmin(np.mean((z - bank)[..., 2:] ** 2, axis=-1), axis=0)
-        xp = np.take_along_axis(bank, best[None, ..., None], axis=0)[0]
-        return MethodResult(xp, grid[best])
-    # the same in one kernel, the bits of track() and of np.argmin(np.mean(...)) on the
-    # bank (tests/test_methods.py), without the bank: seed 001's series of 60 samples
     z2 = np.ascontiguousarray(z.reshape(-1, n))
     alpha = np.ascontiguousarray(np.broadcast_to(g.alpha, (n,)))
     beta = np.ascontiguousarray(np.broadcast_to(g.beta, (grid.size, n)))

@@ -6,10 +6,10 @@ the burn-in, its sum of squares, sum, maximum absolute value and finiteness, the
 lag parts' sums of squares, the per-run mean square of the noise part over the VRF window
 and the Euclidean accumulator. They release the GIL (two cells of a process run at the
 same time) and give the SAME BITS as the numpy form: every sum is evaluated in numpy's
-order (:func:`_pairwise`, numpy's pairwise summation of blocks of up to 128 values, and
-the iterator's chunks: a contiguous array is one block, a strided view is summed in
-chunks of whole rows of up to 8192 values, numpy's buffer size). Tests compare the two
-forms bit for bit (``tests/test_metrics.py``).
+order (:func:`abglib._kernels.pairwise_sum`, numpy's pairwise summation of blocks of up
+to 128 values, and the iterator's chunks: a contiguous array is one block, a strided view
+is summed in chunks of whole rows of up to 8192 values, numpy's buffer size). Tests
+compare the two forms bit for bit (``tests/test_metrics.py``).
 """
 
 from __future__ import annotations
@@ -19,89 +19,13 @@ import math
 import numpy as np
 from numba import njit
 
+from .._kernels import pairwise_leaf as _leaf
+from .._kernels import pairwise_sum as _pairwise
+from .._kernels import pairwise_tree as _tree
+
 #: numpy's iterator buffer (values): a strided view is reduced in chunks of whole rows
 #: of at most this many values; rows longer than this take the numpy form
 BUFSIZE = 8192
-
-
-@njit(cache=True, nogil=True)
-def _leaf(a, lo, n):
-    """numpy's ``pairwise_sum`` of ``a[lo:lo+n]`` for ``n <= 128`` (8 accumulators)."""
-    v = a[lo : lo + n]  # a view indexed from 0: the loop vectorises
-    if n < 8:
-        res = 0.0
-        for i in range(n):
-            res += v[i]
-        return res
-    r0, r1, r2, r3 = v[0], v[1], v[2], v[3]
-    r4, r5, r6, r7 = v[4], v[5], v[6], v[7]
-    m = n - (n % 8)
-    for i in range(8, m, 8):
-        r0 += v[i]
-        r1 += v[i + 1]
-        r2 += v[i + 2]
-        r3 += v[i + 3]
-        r4 += v[i + 4]
-        r5 += v[i + 5]
-        r6 += v[i + 6]
-        r7 += v[i + 7]
-    res = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
-    for i in range(m, n):
-        res += v[i]
-    return res
-
-
-@njit(cache=True, nogil=True)
-def _tree(a, lo, n, wi, wf, mode, plan):
-    """numpy's pairwise sum of ``n`` values (``DOUBLE_pairwise_sum``: ``sum(v[:h]) +
-    sum(v[h:])`` with ``h`` half of ``n`` rounded down to a multiple of 8, leaves of at
-    most 128 values), on an explicit stack in the workspace ``wi``, ``wf``
-    (:func:`workspace`; numba's disk cache does not reload self-recursive functions
-    safely). The leaves come left to right; ``mode`` says what a leaf is:
-
-    * 0: the values ``a[lo:lo+n]`` themselves (returns the sum);
-    * 1: the next entry of ``a``, a leaf's sum computed beforehand (returns the sum);
-    * 2: write each leaf's length to ``plan`` (returns the number of leaves).
-    """
-    sp = 0
-    wi[0, 0], wi[1, 0], wi[2, 0] = lo, n, 0
-    ret = 0.0
-    idx = 0
-    while sp >= 0:
-        fl, fn, stage = wi[0, sp], wi[1, sp], wi[2, sp]
-        if stage == 0 and fn <= 128:
-            if mode == 0:
-                ret = _leaf(a, fl, fn)
-            elif mode == 1:
-                ret = a[idx]
-            else:
-                plan[idx] = fn
-            idx += 1
-            sp -= 1
-            continue
-        h = fn // 2
-        h -= h % 8
-        if stage == 0:  # descend into the left half
-            wi[2, sp] = 1
-            sp += 1
-            wi[0, sp], wi[1, sp], wi[2, sp] = fl, h, 0
-        elif stage == 1:  # left half done (ret): keep it, descend into the right half
-            wf[sp] = ret
-            wi[2, sp] = 2
-            sp += 1
-            wi[0, sp], wi[1, sp], wi[2, sp] = fl + h, fn - h, 0
-        else:  # both halves done
-            ret = wf[sp] + ret
-            sp -= 1
-    return float(idx) if mode == 2 else ret
-
-
-@njit(cache=True, nogil=True)
-def _pairwise(a, lo, n, wi, wf):
-    """numpy's pairwise sum of the 1-D contiguous ``a[lo:lo+n]`` (:func:`_tree`)."""
-    if n <= 128:
-        return _leaf(a, lo, n)
-    return _tree(a, lo, n, wi, wf, 0, wi[0])
 
 
 @njit(cache=True, nogil=True)
@@ -121,11 +45,6 @@ def _combine(sums, n, wi, wf):
     if n <= 128:
         return sums[0]
     return _tree(sums, 0, n, wi, wf, 1, wi[0])
-
-
-def workspace():
-    """The stack of :func:`_pairwise` (64 levels: halving 2**63 values reaches a leaf)."""
-    return np.zeros((3, 64), dtype=np.int64), np.zeros(64)
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -151,7 +70,7 @@ def score(src, acc, mode, nsrc, nacc, has_nz, dt, truth, b, n_vrf, s2, eu, eu_fi
     ``n_vrf`` (>= ``b``) the first sample of the VRF window (< 0: none), ``s2`` the noise
     variance; ``eu`` (R * (n - b),) the Euclidean accumulator (set if ``eu_first``, else
     added to); ``vrf`` (R,) written with the per-run VRFs; ``wi``, ``wf``
-    :func:`workspace`.
+    :func:`abglib._kernels.pairwise_workspace`.
 
     Returns ``(finite, sum of squares, sum, max |error|, noise sum of squares, lag sum of
     squares)`` of the error after the burn-in, each as the numpy form computes it: the

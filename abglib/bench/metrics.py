@@ -492,7 +492,7 @@ def _scratch(scratch: dict, key: str, shape) -> np.ndarray:
 
 def _score_fast(res, nres, o, dt, truth, burn_in, n_vrf, vrf_window, s2, eu_prev, scratch):
     """:func:`_score_numpy` in one compiled pass that releases the GIL (same bits)."""
-    from .._kernels import read_only
+    from .._kernels import pairwise_workspace, read_only
     from . import _metric_kernels
 
     ops = _output_operands(res, o)
@@ -513,7 +513,7 @@ def _score_fast(res, nres, o, dt, truth, burn_in, n_vrf, vrf_window, s2, eu_prev
         )
     dummy = _scratch(scratch, "dummy", (1, 1))
     if "ws" not in scratch:
-        scratch["ws"] = _metric_kernels.workspace()
+        scratch["ws"] = pairwise_workspace()
     first = np.ndim(eu_prev) == 0
     eu_buf = np.empty((rows, n - burn_in)) if first else eu_prev
     nsrc, nacc = (nops[0], nops[1]) if nops else (dummy, None)
@@ -543,10 +543,11 @@ def _euclid(eu_sq: np.ndarray, fast: bool, scratch: dict) -> tuple[float, float]
     """``(np.sum(eu_sq), np.max(np.sqrt(eu_sq)))`` of the Euclidean accumulator."""
     if not fast:
         return float(np.sum(eu_sq)), float(np.max(np.sqrt(eu_sq)))
+    from .._kernels import pairwise_workspace
     from . import _metric_kernels
 
     if "ws" not in scratch:
-        scratch["ws"] = _metric_kernels.workspace()
+        scratch["ws"] = pairwise_workspace()
     sq, mx = _metric_kernels.euclid(eu_sq.reshape(-1), *scratch["ws"])
     return float(sq), float(mx)
 
