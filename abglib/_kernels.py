@@ -490,7 +490,7 @@ def pairwise_workspace():
 
 # --------------------------------------------------------------------------- gain banks
 @njit(cache=True, nogil=True)
-def best_of_bank2(z, alpha, beta, T, xp, best):
+def best_of_bank2(z, alpha, beta, T, wi, wf, xp, best):
     """Seed 001's M3 search (:func:`abglib.methods.m3`) over a bank of g alpha-beta
     trackers whose gains change along time, ``alpha`` (n,) shared and ``beta`` (g, n), on
     every series of ``z`` (b, n): each tracker two-point initialised and run by the
@@ -498,14 +498,14 @@ def best_of_bank2(z, alpha, beta, T, xp, best):
     ``dt = T`` and every sample detected, the whole bank sample by sample (independent
     recursions: their steps overlap instead of waiting on one another); the cost of each,
     the mean squared innovation from sample 2, as ``np.mean`` sums it
-    (:func:`pairwise_sum`); the first tracker of least cost (numpy's ``argmin``: the
-    first NaN if any) into ``best`` (b,) and its predictions into ``xp`` (b, n)."""
+    (:func:`pairwise_sum`, in the workspace ``wi``, ``wf`` of :func:`pairwise_workspace`);
+    the first tracker of least cost (numpy's ``argmin``: the first NaN if any) into
+    ``best`` (b,) and its predictions into ``xp`` (b, n)."""
     g = beta.shape[0]
     nb, n = z.shape
     x, v = np.empty(g), np.empty(g)
     row = np.empty((n, g))  # one series' predictions, the bank innermost
     sq = np.empty(max(n - 2, 0))
-    wi, wf = np.zeros((3, 64), dtype=np.int64), np.zeros(64)  # pairwise_workspace()
     for s in range(nb):
         z0, z1 = z[s, 0], z[s, min(1, n - 1)]
         for i in range(min(2, n)):

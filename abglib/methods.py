@@ -236,13 +236,13 @@ def m3(z, w_grid, dt=1.0) -> MethodResult:
     g = m3_gains(n, grid)
     # the grid's trackers, their costs and the choice in one kernel: the bits of track()
     # and of np.argmin(np.mean(...)) on the bank (tests/test_methods.py), without the bank
-    from ._kernels import best_of_bank2, read_only
+    from ._kernels import best_of_bank2, pairwise_workspace, read_only
 
     z2 = np.ascontiguousarray(z.reshape(-1, n))
     alpha = np.ascontiguousarray(np.broadcast_to(g.alpha, (n,)))
     beta = np.ascontiguousarray(np.broadcast_to(g.beta, (grid.size, n)))
     xp, best = np.empty(z2.shape), np.empty(z2.shape[0], dtype=np.intp)
-    best_of_bank2(*map(read_only, (z2, alpha, beta)), dt, xp, best)
+    best_of_bank2(*map(read_only, (z2, alpha, beta)), dt, *pairwise_workspace(), xp, best)
     return MethodResult(xp.reshape(z.shape), grid[best.reshape(z.shape[:-1])])
 
 
