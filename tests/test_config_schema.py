@@ -9,14 +9,14 @@ from pathlib import Path
 import pytest
 import yaml
 
-from abglib.reporting.pipeline import config_errors
+from abglib.reporting.pipeline import config_errors, read_yaml
 
 from .conftest import require
 
 REPO = Path(__file__).resolve().parents[1]
 SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
-CONFIG = yaml.safe_load((REPO / "config.yaml").read_text(encoding="utf-8"))
-SMALL = yaml.safe_load((REPO / "tests" / "data" / "config_small.yaml").read_text(encoding="utf-8"))
+CONFIG = read_yaml(REPO / "config.yaml")
+SMALL = read_yaml(REPO / "tests" / "data" / "config_small.yaml")
 
 
 @pytest.mark.parametrize("cfg", [CONFIG, SMALL], ids=["config.yaml", "config_small.yaml"])
@@ -107,8 +107,8 @@ def test_small_config_declares_the_same_plausible_ranges():
     """The small config is used alone (--configfile replaces config.yaml): its documents must
     judge robustness over the same ranges as the release config."""
     root = Path(__file__).resolve().parents[1]
-    big = yaml.safe_load((root / "config.yaml").read_text(encoding="utf-8"))
-    small = yaml.safe_load((root / "tests" / "data" / "config_small.yaml").read_text())
+    big = read_yaml(root / "config.yaml")
+    small = read_yaml(root / "tests" / "data" / "config_small.yaml")
     for doc in small["docs"]:
         ranges = {
             k: {kk: vv for kk, vv in v.items() if kk != "basis"}

@@ -7,15 +7,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
 from abglib import AbglibValueError
 from abglib.bench import datasets
-from abglib.reporting.pipeline import config_errors
+from abglib.reporting.pipeline import config_errors, read_yaml
 
 REPO = Path(__file__).resolve().parents[1]
 SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
-CONFIG = yaml.safe_load((REPO / "config.yaml").read_text(encoding="utf-8"))
+CONFIG = read_yaml(REPO / "config.yaml")
 
 
 def _spec(tracks, noise=None, n=40, runs=3, dt=0.5, seed=11):

@@ -13,13 +13,13 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-import yaml
 
 from abglib.common.plotting import description, plt, png_description, save_figure
+from abglib.reporting.pipeline import read_yaml
 
 REPO = Path(__file__).resolve().parents[1]
 TABLES = REPO / "reports" / "v0.3.0"
-CONFIG = yaml.safe_load((REPO / "config.yaml").read_text())
+CONFIG = read_yaml(REPO / "config.yaml")
 RNG = np.random.default_rng(20261129)
 
 

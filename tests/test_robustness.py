@@ -11,12 +11,12 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-import yaml
 from scipy.stats import binom
 
 from abglib import AbglibValueError
 from abglib.replications import ClaimSet, PlausibleRange, Result, Study, evaluate
 from abglib.replications.compare import scorecard
+from abglib.reporting.pipeline import read_yaml
 from abglib.verdicts import robustness as R
 
 REPO = Path(__file__).resolve().parents[1]
@@ -272,13 +272,13 @@ def test_bad_settings_name_the_value_and_the_allowed_range(spec, match):
 
 
 def test_settings_default_to_the_schema_defaults():
-    schema = yaml.safe_load((REPO / "workflow/schemas/config.schema.yaml").read_text())
+    schema = read_yaml(REPO / "workflow/schemas/config.schema.yaml")
     props = schema["properties"]["robustness"]["properties"]
     assert {k: v["default"] for k, v in props.items()} == R.DEFAULTS
     assert props["seed_sets"]["minimum"] == R.MIN_SEED_SETS == 5
     assert R.settings({}) == R.Design(**R.DEFAULTS)
     for name in ("config.yaml", "tests/data/config_small.yaml"):
-        cfg = yaml.safe_load((REPO / name).read_text())
+        cfg = read_yaml(REPO / name)
         assert R.settings(cfg).seed_sets >= R.MIN_SEED_SETS, name
 
 

@@ -11,7 +11,8 @@ import functools
 from pathlib import Path
 
 import pytest
-import yaml
+
+from abglib.reporting.pipeline import read_yaml
 
 ROOT = Path(__file__).resolve().parents[2]
 PUBLISHED = ROOT / "data" / "published"
@@ -25,14 +26,14 @@ def claim_test(doc: str, key: str):
 @functools.cache
 def repo_config() -> dict:
     """The repository's ``config.yaml`` (the nominal inputs the claims are judged at)."""
-    return yaml.safe_load((ROOT / "config.yaml").read_text(encoding="utf-8"))
+    return read_yaml(ROOT / "config.yaml")
 
 
 @functools.cache
 def small_config() -> dict:
     """``config.yaml`` with the small test config merged over it (as Snakemake merges)."""
     cfg = repo_config()
-    small = yaml.safe_load((ROOT / "tests" / "data" / "config_small.yaml").read_text())
+    small = read_yaml(ROOT / "tests" / "data" / "config_small.yaml")
     return _merge(cfg, small)
 
 

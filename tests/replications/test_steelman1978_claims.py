@@ -28,6 +28,9 @@ from .conftest import ROOT, claim_test, published, published_paths, small_config
 
 DOC = "steelman1978"
 CLAIMS, _ = claims_of(DOC)
+# one worker makes the module's study and comparison (0.6 s each) for all its tests,
+# instead of each worker making them again (pytest-xdist --dist loadgroup)
+pytestmark = pytest.mark.xdist_group("steelman1978_claims")
 
 
 @pytest.fixture(scope="module")
