@@ -18,6 +18,10 @@ from abglib.replications.antenna import (
 from .antenna_common import DT, NOMINAL_VALUES
 
 NOMINAL = AntennaParams(**NOMINAL_VALUES)
+# these tests call compiled loops with signatures of their own (a transposed matrix, a
+# writeable covariance, the phase-by-phase Kalman loop), which numba's warm cache does not
+# hold: one worker compiles them for both modules (pytest-xdist --dist loadgroup)
+pytestmark = pytest.mark.xdist_group("antenna_test_kernels")
 VV = 1e-3 * np.eye(2)
 
 
