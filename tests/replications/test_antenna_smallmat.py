@@ -15,13 +15,11 @@ from abglib.replications.antenna import (
 from abglib.replications.antenna import kalman as kalman_mod
 from abglib.replications.antenna._smallmat import gauss_solve, matmul, matmul_nt, matmul_tn
 
-from .antenna_common import DT, NOMINAL_VALUES
+from .antenna_common import DT, NOMINAL_VALUES, OWN_KERNEL_SIGNATURES
+
+pytestmark = OWN_KERNEL_SIGNATURES
 
 NOMINAL = AntennaParams(**NOMINAL_VALUES)
-# these tests call compiled loops with signatures of their own (a transposed matrix, a
-# writeable covariance, the phase-by-phase Kalman loop), which numba's warm cache does not
-# hold: one worker compiles them for both modules (pytest-xdist --dist loadgroup)
-pytestmark = pytest.mark.xdist_group("antenna_test_kernels")
 VV = 1e-3 * np.eye(2)
 
 
