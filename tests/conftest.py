@@ -221,12 +221,42 @@ def freeze_collected() -> None:
     gc.freeze()
 
 
+#: The BLAS/LAPACK thread limit a pytest-xdist worker holds for its session
+#: (:func:`share_blas_cores`; kept referenced, never restored).
+_BLAS_LIMIT: list = []
+
+
+def share_blas_cores() -> int:
+    """Limit a pytest-xdist worker's BLAS/LAPACK pools (numpy's and scipy's OpenBLAS) to
+    its share of the cores, ``cores // workers`` (at least 1), and return it.
+
+    OpenBLAS starts a thread per core and, after each call, keeps its idle threads
+    spinning for a while before they sleep. Two workers on two cores, each making
+    thousands of tiny BLAS/LAPACK calls on two threads (the studies of the claim tests,
+    outside :func:`abglib.replications.one_blas_thread`), competed for four: the
+    development loop took 50-56 CPU-s with the pools as they are and 41-44 CPU-s on one
+    thread a worker (2026-12-04, issue 24). The builds and dry runs a test starts are
+    processes of their own and keep OpenBLAS's default, as a user's build does. scikit-learn's
+    test suite limits its workers the same way. The libraries must be loaded first
+    (threadpoolctl limits the loaded ones), so numpy's and scipy's linear algebra are
+    imported here."""
+    import numpy  # noqa: F401
+    import scipy.linalg  # noqa: F401
+    from threadpoolctl import threadpool_limits
+
+    workers = int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1"))
+    share = max(1, (os.cpu_count() or 1) // max(1, workers))
+    _BLAS_LIMIT[:] = [threadpool_limits(limits=share, user_api="blas")]
+    return share
+
+
 #: Why this worker's tests cannot run as scheduled ("" if they can).
 GROUPS_LOST = pytest.StashKey[str]()
 
 
 def pytest_collection_finish(session):
-    """Freeze what the imports and the collection made (:func:`freeze_collected`), and fail
+    """Give a pytest-xdist worker its share of the BLAS cores (:func:`share_blas_cores`),
+    freeze what the imports and the collection made (:func:`freeze_collected`), and fail
     every test of a pytest-xdist worker whose ``--dist loadgroup`` groups nothing.
 
     pytest-xdist marks a grouped test by appending ``@<group>`` to its node id; pytest 9.2
@@ -236,6 +266,8 @@ def pytest_collection_finish(session):
     keeps pytest below 9.2; this check makes the break loud if that bound is lifted early
     (each test fails with the reason: a worker cannot stop the session cleanly).
     """
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        share_blas_cores()
     freeze_collected()
     config = session.config
     config.stash[GROUPS_LOST] = ""
