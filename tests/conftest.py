@@ -226,9 +226,17 @@ def freeze_collected() -> None:
 _BLAS_LIMIT: list = []
 
 
+def usable_cores() -> int:
+    """The cores this process may run on (its CPU affinity where the system says, as
+    pytest-xdist's ``-n auto`` counts them), at least 1."""
+    if hasattr(os, "sched_getaffinity"):
+        return max(1, len(os.sched_getaffinity(0)))
+    return max(1, os.cpu_count() or 1)
+
+
 def share_blas_cores() -> int:
     """Limit a pytest-xdist worker's BLAS/LAPACK pools (numpy's and scipy's OpenBLAS) to
-    its share of the cores, ``cores // workers`` (at least 1), and return it.
+    its share of the cores, ``usable_cores() // workers`` (at least 1), and return it.
 
     OpenBLAS starts a thread per core and, after each call, keeps its idle threads
     spinning for a while before they sleep. Two workers on two cores, each making
@@ -245,7 +253,7 @@ def share_blas_cores() -> int:
     from threadpoolctl import threadpool_limits
 
     workers = int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1"))
-    share = max(1, (os.cpu_count() or 1) // max(1, workers))
+    share = max(1, usable_cores() // max(1, workers))
     _BLAS_LIMIT[:] = [threadpool_limits(limits=share, user_api="blas")]
     return share
 

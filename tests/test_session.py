@@ -2,7 +2,7 @@
 
 import os
 
-from .conftest import share_blas_cores
+from .conftest import share_blas_cores, usable_cores
 
 
 def _blas_threads() -> list[int]:
@@ -12,9 +12,9 @@ def _blas_threads() -> list[int]:
 
 
 def test_a_worker_gets_its_share_of_the_blas_cores(monkeypatch):
-    """``cores // workers`` threads for every loaded BLAS pool (numpy's and scipy's), at
-    least one; the session's own share is put back afterwards."""
-    cores = os.cpu_count() or 1
+    """``usable cores // workers`` threads at most for every loaded BLAS pool (numpy's and
+    scipy's), at least one; the session's own share is put back afterwards."""
+    cores = usable_cores()
     try:
         monkeypatch.setenv("PYTEST_XDIST_WORKER_COUNT", str(2 * cores))
         assert share_blas_cores() == 1
@@ -22,11 +22,10 @@ def test_a_worker_gets_its_share_of_the_blas_cores(monkeypatch):
         assert len(threads) >= 2 and set(threads) == {1}, threads
         monkeypatch.setenv("PYTEST_XDIST_WORKER_COUNT", "1")
         assert share_blas_cores() == cores
-        assert set(_blas_threads()) == {cores}
     finally:
         monkeypatch.undo()
         share = share_blas_cores()
     if os.environ.get("PYTEST_XDIST_WORKER"):  # this worker holds its share
         workers = int(os.environ["PYTEST_XDIST_WORKER_COUNT"])
         assert share == max(1, cores // workers)
-        assert set(_blas_threads()) == {share}
+        assert max(_blas_threads()) <= share  # fewer if OPENBLAS_NUM_THREADS says so
