@@ -221,11 +221,6 @@ def freeze_collected() -> None:
     gc.freeze()
 
 
-#: The BLAS/LAPACK thread limit a pytest-xdist worker holds for its session
-#: (:func:`share_blas_cores`; kept referenced, never restored).
-_BLAS_LIMIT: list = []
-
-
 def usable_cores() -> int:
     """The cores this process may run on (its CPU affinity where the system says, as
     pytest-xdist's ``-n auto`` counts them), at least 1."""
@@ -242,8 +237,8 @@ def share_blas_cores() -> int:
     spinning for a while before they sleep. Two workers on two cores, each making
     thousands of tiny BLAS/LAPACK calls on two threads (the studies of the claim tests,
     outside :func:`abglib.replications.one_blas_thread`), competed for four: the
-    development loop took 50-56 CPU-s with the pools as they are and 41-44 CPU-s on one
-    thread a worker (2026-12-04, issue 24). The builds and dry runs a test starts are
+    development loop took 50-56 CPU-s with the pools as they were and 43.6-45.2 CPU-s with
+    this limit (2026-12-04, issue 24). The builds and dry runs a test starts are
     processes of their own and keep OpenBLAS's default, as a user's build does. scikit-learn's
     test suite limits its workers the same way. The libraries must be loaded first
     (threadpoolctl limits the loaded ones), so numpy's and scipy's linear algebra are
@@ -254,7 +249,7 @@ def share_blas_cores() -> int:
 
     workers = int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1"))
     share = max(1, usable_cores() // max(1, workers))
-    _BLAS_LIMIT[:] = [threadpool_limits(limits=share, user_api="blas")]
+    threadpool_limits(limits=share, user_api="blas")  # held until changed: no restore on exit
     return share
 
 
