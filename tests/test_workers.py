@@ -193,6 +193,45 @@ def test_a_failed_job_leaves_no_benchmark_record(script, tmp_path, monkeypatch):
     assert not bench.exists()
 
 
+SPAN = """
+import time
+from pathlib import Path
+
+t0 = time.perf_counter()
+time.sleep(0.2)
+Path(snakemake.output.out).write_text(f"{t0} {time.perf_counter()}")
+"""
+
+
+def test_in_place_scripts_in_threads_run_one_at_a_time(tmp_path, monkeypatch):
+    # a SLURM group job runs its jobs in threads of one Snakemake process and their
+    # scripts in place: two scripts there must never overlap (each takes over the
+    # process's stderr and excepthook), and each job's record times only its own script
+    import threading
+
+    monkeypatch.chdir(tmp_path)
+    script = tmp_path / "span.py"
+    script.write_text(SPAN, encoding="utf-8")
+    stderr, hook = sys.stderr, sys.excepthook
+    names = ["a", "b", "c"]
+    threads = [
+        threading.Thread(
+            target=run_script,
+            args=(script, _job(tmp_path, n)),
+            kwargs={"in_worker": False, "benchmark": f"{n}.tsv"},
+        )
+        for n in names
+    ]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    spans = sorted(tuple(map(float, (tmp_path / f"{n}.json").read_text().split())) for n in names)
+    assert all(end <= nxt for (_, end), (nxt, _) in zip(spans, spans[1:], strict=False)), spans
+    assert all(0.2 <= float(_record(tmp_path / f"{n}.tsv")["s"]) < 0.35 for n in names)
+    assert (sys.stderr, sys.excepthook) == (stderr, hook)
+
+
 def test_in_place_a_job_is_timed_from_its_start(tmp_path, monkeypatch):
     # on a cluster the job's process ran Snakemake before the script: only the script's
     # CPU time is the job's

@@ -13,7 +13,9 @@ block that hands its script to :func:`run_script`:
   matplotlib state and ``sys.stderr``, nothing left behind for the next job, and a crash
   fails only that job;
 - anywhere else (a cluster job or any job that already has a process of its own), the
-  script runs in the calling process, as Snakemake's ``script:`` would.
+  script runs in the calling process, as Snakemake's ``script:`` would. A SLURM group job
+  (profiles/slurm) runs its jobs one after another in threads of one Snakemake process:
+  their scripts run there in turn, never two at once, sharing that process's imports.
 
 Either way the script sees the same ``snakemake`` object as under ``script:``
 (``snakemake.input``, ``.output``, ``.params``, ``.log``...), so the scripts themselves
@@ -88,6 +90,11 @@ PRELOAD = [
 
 _CONTEXT = None
 _CONTEXT_LOCK = threading.Lock()
+#: held while a script runs in place: the jobs of a cluster group run in threads of one
+#: Snakemake process, and a script in place takes over the process's ``sys.stderr``,
+#: excepthook and matplotlib state, so two must not overlap (the profile's groups are
+#: one core wide, and this keeps a wider one correct)
+_IN_PLACE_LOCK = threading.Lock()
 
 
 def script_object(
@@ -246,8 +253,9 @@ def run_script(script, smk, *, in_worker: bool = True, benchmark=None) -> None:
 
     ``smk`` is the job's ``snakemake`` object (:func:`script_object`). ``in_worker``:
     run it in a fork of the warm fork server (the caller is Snakemake's own process,
-    whose jobs are threads); else run it here, in the job's own process, with
-    ``sys.stderr`` and the excepthook given back afterwards. Raises :class:`JobFailed`
+    whose jobs are threads); else run it here, in the job's own process (or a cluster
+    group's, one script at a time), with ``sys.stderr`` and the excepthook given back
+    afterwards. Raises :class:`JobFailed`
     naming the script, the error and the job's log when the script fails.
 
     ``benchmark``: a path where a job that succeeded gets its benchmark record
@@ -260,19 +268,21 @@ def run_script(script, smk, *, in_worker: bool = True, benchmark=None) -> None:
     log = f" (full traceback in {smk.log[0]})" if len(smk.log) else ""
     start = time.perf_counter()
     if not in_worker:
-        saved = sys.stderr, sys.excepthook
-        before = process_usage()
-        try:
-            _execute(script, smk)
-        except Exception as err:
-            traceback.print_exc()
-            raise JobFailed(f"{script.name} failed: {type(err).__name__}: {err}{log}") from err
-        finally:
-            sys.stderr, sys.excepthook = saved
-        if benchmark is not None:
-            usage = process_usage()
-            usage["cpu_time"] -= before["cpu_time"]
-            write_benchmark(benchmark, time.perf_counter() - start, usage)
+        with _IN_PLACE_LOCK:
+            start = time.perf_counter()
+            saved = sys.stderr, sys.excepthook
+            before = process_usage()
+            try:
+                _execute(script, smk)
+            except Exception as err:
+                traceback.print_exc()
+                raise JobFailed(f"{script.name} failed: {type(err).__name__}: {err}{log}") from err
+            finally:
+                sys.stderr, sys.excepthook = saved
+            if benchmark is not None:
+                usage = process_usage()
+                usage["cpu_time"] -= before["cpu_time"]
+                write_benchmark(benchmark, time.perf_counter() - start, usage)
         return
     ctx = _context()
     receive, send = ctx.Pipe(duplex=False)
