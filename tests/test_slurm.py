@@ -7,13 +7,14 @@
 from the repository's root with the whole small config (every target of a plain build),
 with SBATCH_ACCOUNT and SBATCH_PARTITION unset, in a scratch working directory, and the
 same build locally with ``snakemake -c2``, timing both. It checks that the cluster run
-submitted at most MAX_SLURM_JOBS SLURM jobs (the profile's groups: one per document, the
-dataset and cell parts two at a time, the benchmark and the index), each accounted by
-``sacct`` as COMPLETED under the user's default account (``sacctmgr``) and the cluster's
-default partition (``sinfo``) and named after its group, and that nothing else with the
-profile's names was submitted while it ran; that every Snakemake job of the local build
-ran on the cluster, none on the submitting machine; that the two builds wrote
-byte-identical tables and datasets.
+submitted at most MAX_SLURM_JOBS SLURM jobs (the profile's groups: the documents in two,
+the dataset and cell parts five at a time, the benchmark), each accounted by ``sacct`` as
+COMPLETED under the user's default account (``sacctmgr``) and the cluster's default
+partition (``sinfo``) and named after its group, and that nothing else with the profile's
+names was submitted while it ran; that every Snakemake job of the local build ran, on the
+cluster but for the Snakefile's localrules (the target rule and the index's aggregations,
+run by the submitting process); that the two builds wrote byte-identical tables and
+datasets.
 ``test_small_build_on_slurm_within_twice_local_time`` checks issue 24's target on those
 two times, that the cluster run took at most MAX_RATIO times the local build
 (docs/cluster.md lists every measured pair). Both tests read the two timed builds from one

@@ -15,10 +15,9 @@
 # controller and node spool, logs (log/) and the daemons' PID files (pid/). munge runs on
 # a private socket and key, MariaDB on a private data directory; nothing goes to /run or
 # /var. One thing lives outside while the cluster runs: the symlink /etc/slurm/slurm.conf
-# -> etc/slurm.conf, because the Slurm commands inside a job must find the config at its
-# default path (snakemake-executor-plugin-slurm-jobstep 0.6.1 drops SLURM_CONF from the
-# environment of the `srun` it starts in every job; real clusters keep their config
-# there). `start` refuses to replace an /etc/slurm/slurm.conf it did not make, and `stop`
+# -> etc/slurm.conf, because the Slurm commands that the tests and the profile run (sbatch,
+# sacct, scancel, from processes that do not inherit this script's SLURM_CONF) must find
+# the config at its default path, where real clusters keep theirs. `start` refuses to replace an /etc/slurm/slurm.conf it did not make, and `stop`
 # removes the symlink. A run killed before its `stop` (a CI job or session that ended in
 # the middle of the SLURM test) leaves the symlink behind, pointing at its own directory:
 # `start` takes such a link over when none of that cluster's daemons runs; when some still
@@ -29,7 +28,7 @@
 # default), account `ci` with root in it (root's default account stays `root`, so that a
 # test can tell SBATCH_ACCOUNT / SBATCH_PARTITION from the defaults).
 # Accounting runs through slurmdbd on MariaDB, so `sacct` answers as on a real cluster (the
-# Snakemake SLURM plugin polls job states with sacct; without it the workflow hangs).
+# profile polls job states with sacct; without it the workflow hangs).
 # EnforcePartLimits=ALL rejects a job that asks for more than the node has at submission
 # instead of leaving it pending for ever. No systemd, no cgroups (works in containers).
 #

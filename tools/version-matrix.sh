@@ -7,10 +7,9 @@
 #           (uv pip install --resolution lowest-direct -e ".[pipeline,test,kernel]")
 #   newest  Python 3.13, the newest versions (uv pip install -e ".[dev]")
 #
-# The lowest end installs dev without its slurm extra: snakemake-executor-plugin-slurm 2.8
-# itself requires numpy >= 2.4.5 and pandas >= 2.3.3, so with it no numpy, scipy, numba or
-# pandas below those would ever be installed, and the plugin is only used by the slurm-marked
-# tests, which need a cluster (.ci/run runs them with the newest versions).
+# Neither end installs the slurm extra (Snakemake's generic cluster executor): only the
+# slurm-marked tests use it, and they need a cluster (.ci/run runs them once, with the
+# newest versions).
 #
 # Each session runs:
 #   - the small pipeline: snakemake -s <repo>/Snakefile -d <session>/build
