@@ -14,8 +14,9 @@ block that hands its script to :func:`run_script`:
   fails only that job;
 - anywhere else (a cluster job or any job that already has a process of its own), the
   script runs in the calling process, as Snakemake's ``script:`` would. A SLURM group job
-  (profiles/slurm) runs its jobs one after another in threads of one Snakemake process:
-  their scripts run there in turn, never two at once, sharing that process's imports.
+  (profiles/slurm) runs its jobs in threads of one Snakemake process, and the submitting
+  process of a cluster run its ``localrules`` in threads of its own: their scripts run
+  there in turn, never two at once, sharing that process's imports.
 
 Either way the script sees the same ``snakemake`` object as under ``script:``
 (``snakemake.input``, ``.output``, ``.params``, ``.log``...), so the scripts themselves
@@ -255,8 +256,8 @@ def run_script(script, smk, *, in_worker: bool = True, benchmark=None) -> None:
     run it in a fork of the warm fork server (the caller is Snakemake's own process,
     whose jobs are threads); else run it here, in the job's own process (or a cluster
     group's, one script at a time), with ``sys.stderr`` and the excepthook given back
-    afterwards. Raises :class:`JobFailed`
-    naming the script, the error and the job's log when the script fails.
+    afterwards. Raises :class:`JobFailed` naming the script, the error and the job's log
+    when the script fails.
 
     ``benchmark``: a path where a job that succeeded gets its benchmark record
     (:func:`~abglib.common.jobs.write_benchmark`): the job's wall time, and the CPU time
