@@ -21,9 +21,9 @@ include: "workflow/rules/scripts.smk"
 
 
 # On a cluster (profiles/slurm) the last aggregations, the scorecard, the changes page,
-# the report assets and the index page (about 1 s of work in all), run in the submitting
-# Snakemake process instead of as a SLURM job that would wait for a slot after the last
-# document (docs/cluster.md). A local build runs every job locally anyway.
+# the report assets and the index page (a second or two of work in all), run in the
+# submitting Snakemake process instead of as a SLURM job that would wait for a slot after
+# the last document (docs/cluster.md). A local build runs every job locally anyway.
 localrules:
     all,
     scorecard,

@@ -8,7 +8,7 @@ from the repository's root with the whole small config (every target of a plain 
 with SBATCH_ACCOUNT and SBATCH_PARTITION unset, in a scratch working directory, and the
 same build locally with ``snakemake -c2``, timing both. It checks that the cluster run
 submitted at most MAX_SLURM_JOBS SLURM jobs (the profile's groups: the documents in two,
-the dataset and cell parts five at a time, the benchmark), each accounted by ``sacct`` as
+the dataset and cell parts ten at a time, the benchmark), each accounted by ``sacct`` as
 COMPLETED under the user's default account (``sacctmgr``) and the cluster's default
 partition (``sinfo``) and named after its group, and that nothing else with the profile's
 names was submitted while it ran; that every Snakemake job of the local build ran, on the

@@ -6,6 +6,7 @@ tests/test_slurm.py runs them on a real cluster."""
 import json
 import os
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -78,6 +79,7 @@ def test_submit_asks_sbatch_for_the_group_and_prints_its_id(cluster):
     sent = json.loads(record.read_text())
     assert sent["args"] == [
         "--parsable",
+        "--no-requeue",
         "--job-name=abglib-cells",
         "--cpus-per-task=1",
         "--output=.snakemake/slurm_logs/cells-%j.log",
@@ -106,25 +108,27 @@ def test_submit_leaves_account_and_partition_to_sbatch(cluster):
 def test_submit_a_job_outside_every_group_and_without_resources(cluster):
     work, env, record = cluster
     props = {"type": "single", "rule": "all", "threads": 2, "resources": {"tmpdir": "/tmp"}}
-    out, script = _submit(work, env, props)
+    # Snakemake passes --force-use-threads itself to a job outside every group
+    text = JOBSCRIPT.format(props=json.dumps(props)).replace(
+        " --cores 1", " --cores 1 --force-use-threads"
+    )
+    out, script = _submit(work, env, text=text)
     assert out.returncode == 0, out.stdout + out.stderr
     assert json.loads(record.read_text())["args"] == [
         "--parsable",
+        "--no-requeue",
         "--job-name=abglib-all",
         "--cpus-per-task=2",
         "--output=.snakemake/slurm_logs/all-%j.log",
         str(script),
     ]
-    # submitting the same script again adds nothing twice
-    out, script = _submit(work, env, text=script.read_text())
-    assert out.returncode == 0, out.stdout + out.stderr
-    assert script.read_text().count("--force-use-threads") == 1
+    assert script.read_text() == text  # the flag is there once already
 
 
 @pytest.mark.parametrize(
     "old, new, message",
     [
-        (" -m snakemake ", " -m other ", "no ' -m snakemake ' command"),
+        (" -m snakemake ", " -m other ", "no '-m snakemake' command"),
         ("# properties", "# nothing", "no '# properties = ' line"),
     ],
 )
@@ -136,45 +140,109 @@ def test_submit_refuses_a_job_script_it_cannot_read(cluster, old, new, message):
     assert not record.exists()  # nothing was submitted
 
 
-def test_submit_reports_a_failed_sbatch(cluster):
+@pytest.mark.parametrize(
+    "body, message",
+    [
+        ('echo "sbatch: error: invalid account" >&2; exit 3\n',
+         "sbatch exited with 3: sbatch: error: invalid account"),
+        ('echo "queued"\n', "sbatch printed no job id: 'queued'"),
+    ],
+)  # fmt: skip
+def test_submit_reports_a_failed_sbatch(cluster, body, message):
+    # Snakemake shows the submit command's stdout when it fails, and would poll a job id
+    # that is not one for ever
     work, env, _ = cluster
-    _stand_in(Path(env["PATH"].split(os.pathsep)[0]), "sbatch",
-              'echo "sbatch: error: invalid account" >&2; exit 3\n')  # fmt: skip
+    _stand_in(Path(env["PATH"].split(os.pathsep)[0]), "sbatch", body)
     out, _ = _submit(work, env)
     assert out.returncode == 1
-    assert "sbatch exited with 3: sbatch: error: invalid account" in out.stdout
+    assert message in out.stdout
+
+
+def _profile_value(key: str) -> str:
+    """A value of the profile as Snakemake's profile reader gives it to the executor (with
+    environment variables expanded)."""
+    return os.path.expandvars(yaml.safe_load((PROFILE / "config.yaml").read_text())[key])
+
+
+def test_submit_command_runs_the_script_from_any_directory(cluster, tmp_path):
+    # the submit command is formatted like a job's (snakemake.utils.format, the Snakefile's
+    # globals: sys and workflow); a clone in a path with spaces still works
+    from types import SimpleNamespace
+
+    from snakemake.utils import format as smk_format
+
+    work, env, record = cluster
+    clone = tmp_path / "a clone" / "abglib"
+    (clone / "profiles" / "slurm").mkdir(parents=True)
+    # a copy without the executable bit: the command runs it with Snakemake's Python
+    (clone / "profiles" / "slurm" / "sbatch-submit.py").write_bytes(SUBMIT.read_bytes())
+    command = smk_format(
+        _profile_value("cluster-generic-submit-cmd"),
+        sys=sys,
+        workflow=SimpleNamespace(basedir=str(clone)),
+    )
+    script = work / "snakejob.sh"
+    script.write_text(JOBSCRIPT.format(props=json.dumps(GROUP)), encoding="utf-8")
+    out = subprocess.run(
+        f'{command} "{script}"', shell=True, cwd=work, capture_output=True, text=True,
+        env=env, timeout=60,
+    )  # fmt: skip
+    assert (out.returncode, out.stdout) == (0, "4711\n"), out.stderr
+    assert json.loads(record.read_text())["args"][-1] == str(script)
+
+
+def test_status_command_stays_one_short_name():
+    # Snakemake's profile reader checks whether each value names a file beside the profile
+    # (profiles.py: (profile_dir / value).exists()); a value over 255 bytes without a slash
+    # makes that raise "File name too long" and the profile fail to load
+    command = _profile_value("cluster-generic-status-cmd")
+    assert "/" not in command and len(command.encode()) < 255, len(command.encode())
+    assert not (PROFILE / command).exists()
 
 
 @pytest.mark.parametrize(
-    "sacct_prints, status",
+    "sacct_prints, squeue_prints, status",
     [
-        ("COMPLETED", "success"),
-        ("RUNNING", "running"),
-        ("PENDING", "running"),
-        ("COMPLETING", "running"),
-        ("", "running"),  # not in the accounting yet
-        ("FAILED", "failed"),
-        ("CANCELLED by 0", "failed"),
-        ("TIMEOUT", "failed"),
-        ("OUT_OF_MEMORY", "failed"),
-        ("NODE_FAIL", "failed"),
-        ("PREEMPTED", "failed"),
+        ("COMPLETED", None, "success"),
+        ("RUNNING", None, "running"),
+        ("PENDING", None, "running"),
+        ("COMPLETING", None, "running"),
+        ("REQUEUED", None, "running"),
+        ("SUSPENDED", None, "running"),
+        ("FAILED", None, "failed"),
+        ("CANCELLED by 0", None, "failed"),
+        ("TIMEOUT", None, "failed"),
+        ("OUT_OF_MEMORY", None, "failed"),
+        ("NODE_FAIL", None, "failed"),
+        ("PREEMPTED", None, "failed"),
+        # not in the accounting yet (or no accounting): squeue's state
+        ("", "PENDING", "running"),
+        ("", "RUNNING", "running"),
+        ("", "COMPLETED", "success"),
+        ("", "FAILED", "failed"),
+        # a job neither knows
+        ("", "", "failed"),
     ],
 )
-def test_status_command_maps_sacct_states(tmp_path, sacct_prints, status):
-    # the profile's command as Snakemake runs it: the value with environment variables
-    # expanded (Snakemake's profile reader does), then `<command> '<jobid>'` in a shell
-    command = yaml.safe_load((PROFILE / "config.yaml").read_text())["cluster-generic-status-cmd"]
-    command = os.path.expandvars(command)
+def test_status_command_maps_slurm_states(tmp_path, sacct_prints, squeue_prints, status):
+    # the profile's command as Snakemake runs it: `<command> '<jobid>'` in a shell, with
+    # stand-ins for sacct and squeue that write what they were asked
+    command = _profile_value("cluster-generic-status-cmd")
     bindir = tmp_path / "bin"
     bindir.mkdir()
-    _stand_in(
-        bindir, "sacct",
-        f'[ "$*" = "-j 4711 -X -n -P -o State" ] || exit 9\n'
-        f'[ -z "{sacct_prints}" ] || echo "{sacct_prints}"\n',
-    )  # fmt: skip
+    for name, prints in (("sacct", sacct_prints), ("squeue", squeue_prints)):
+        _stand_in(
+            bindir, name,
+            f'echo "$*" >> "{tmp_path}/{name}.args"\n[ -z "{prints or ""}" ] || echo "{prints}"\n',
+        )  # fmt: skip
     env = {**os.environ, "PATH": f"{bindir}{os.pathsep}{os.environ['PATH']}"}
     out = subprocess.run(
         f"{command} '4711'", shell=True, capture_output=True, text=True, env=env, timeout=60
     )
     assert (out.returncode, out.stdout) == (0, f"{status}\n"), out.stderr
+    assert (tmp_path / "sacct.args").read_text() == "-XnP -o State -j 4711\n"
+    # squeue only when sacct has nothing
+    if squeue_prints is None:
+        assert not (tmp_path / "squeue.args").exists()
+    else:
+        assert (tmp_path / "squeue.args").read_text() == "-h -o %T -j 4711\n"
