@@ -215,6 +215,8 @@ def test_status_command_stays_one_short_name():
         ("OUT_OF_MEMORY", None, "failed"),
         ("NODE_FAIL", None, "failed"),
         ("PREEMPTED", None, "failed"),
+        # a job id the cluster used twice: the newest job's state (sacct lists it last)
+        ("FAILED\nCOMPLETED", None, "success"),
         # not in the accounting yet (or no accounting): squeue's state
         ("", "PENDING", "running"),
         ("", "RUNNING", "running"),
@@ -240,9 +242,9 @@ def test_status_command_maps_slurm_states(tmp_path, sacct_prints, squeue_prints,
         f"{command} '4711'", shell=True, capture_output=True, text=True, env=env, timeout=60
     )
     assert (out.returncode, out.stdout) == (0, f"{status}\n"), out.stderr
-    assert (tmp_path / "sacct.args").read_text() == "-XnP -o State -j 4711\n"
+    assert (tmp_path / "sacct.args").read_text() == "-XnPo State -j 4711\n"
     # squeue only when sacct has nothing
     if squeue_prints is None:
         assert not (tmp_path / "squeue.args").exists()
     else:
-        assert (tmp_path / "squeue.args").read_text() == "-h -o %T -j 4711\n"
+        assert (tmp_path / "squeue.args").read_text() == "-ho %T -j 4711\n"
