@@ -1,7 +1,7 @@
 """The SLURM profile's own commands, without a cluster (profiles/slurm): its sbatch
 wrapper (sbatch-submit.py) against a stand-in ``sbatch`` that records what it is given,
-and its status command against a stand-in ``sacct`` printing each state.
-tests/test_slurm.py runs them on a real cluster."""
+and its status command against stand-ins for ``sacct`` and ``squeue`` that record what
+they are asked and print each state. tests/test_slurm.py runs them on a real cluster."""
 
 import json
 import os

@@ -39,6 +39,7 @@ import re
 import subprocess
 import sys
 from pathlib import Path
+from typing import NoReturn
 
 #: Snakemake's job scripts carry the job's properties on one line (its default template)
 PROPERTIES = re.compile(r"^# properties = (.*)$", flags=re.M)
@@ -50,7 +51,8 @@ THREADS = "--force-use-threads"
 LOGS = Path(".snakemake") / "slurm_logs"
 
 
-def fail(message: str) -> None:
+def fail(message: str) -> NoReturn:
+    """Say why on stdout (which Snakemake shows) and stderr, and exit with 1."""
     print(f"sbatch-submit.py: {message}")
     print(f"sbatch-submit.py: {message}", file=sys.stderr)
     sys.exit(1)
