@@ -31,7 +31,8 @@ Reference rows (no target; they show what bounds the target rows on this machine
 * ``dependency chain, minimal numba loop`` (single series only): seed 000, eqs 1-6 in
   the fewest operations numba compiles it to, no outputs stored, no checks: the speed
   of the recursion's dependency chain itself (each sample waits for the previous
-  estimate), which no bit-identical single-series kernel can beat. Printed with the
+  estimate), which no bit-identical single-series kernel beats on every input (splitting
+  a series and verifying was measured: benchmarks/chain_coalescence.py). Printed with the
   CPU-time latencies of a dependent add and a dependent multiply measured in the same
   round, and the chain's length in those (docs/engine-speed.md explains it).
 
@@ -431,7 +432,7 @@ def verdicts(df: pd.DataFrame) -> tuple[list[str], bool]:
             )
     lines.append(
         f"one series: >= {SINGLE_RATE:.0e} /s, or the dependency chain's own speed on this "
-        "machine (no bit-identical kernel can beat it)"
+        "machine (no bit-identical kernel beats it on every input)"
     )
     for filt in GAINS:
         chain = per_round.loc[("single", filt, CHAIN)].median_rate
