@@ -254,7 +254,7 @@ def track(
         contents are unspecified. Without ``out``, large outputs (>= 4 MB) reuse the
         memory of earlier outputs that are gone (no array or view of them left), so a
         loop that drops each result before the next call pays no fresh pages either
-        (:mod:`abglib._buffers`; at most 1 GiB is kept, ``ABGLIB_POOL_BYTES`` sets it).
+        (``abglib._buffers``; at most 1 GiB is kept, ``ABGLIB_POOL_BYTES`` sets it).
 
     Returns
     -------

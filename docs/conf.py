@@ -128,6 +128,10 @@ def api_home(modname: str, name: str) -> str:
 
 
 autosummary_context = {"api_home": api_home}
+# every cross-reference must resolve (-W makes a miss an error), but those to numpy, scipy
+# and the standard library: without intersphinx (offline) they render as code, unlinked
+nitpicky = True
+nitpick_ignore_regex = [(r"py:.*", r"(numpy|scipy|csv)(\..*)?")]
 # a function in the config cannot be pickled with the environment: Sphinx then rereads
 # every page on the next build (a clean build anyway, docs/README.md); nothing else is muted
 suppress_warnings = ["config.cache"]

@@ -28,7 +28,7 @@ Modules (one concept each; every public name is re-exported here):
     :func:`abglib.design.steady_state_kalman`)
 
 Seed 002's printed forms (eqs 3, 5-7, 8-14, the steady-state lag formulas) live with
-their document in :mod:`abglib.replications.huang.printed`.
+their document in ``abglib.replications.huang.printed``.
 """
 
 from ._enbw import *  # noqa: F403

@@ -16,7 +16,7 @@ acceleration error of ``A_a^2`` are already 1 per-sample unit).
 :func:`steady_state_lag` gives the steady-state position error for a constant
 acceleration or a constant jerk from the final-value theorem; Huang et al.'s printed
 formulas (seed 002, "Tracking errors") are
-:func:`abglib.replications.huang.printed.steady_state_lag_huang`.
+``abglib.replications.huang.printed.steady_state_lag_huang``.
 """
 
 from __future__ import annotations
@@ -334,7 +334,7 @@ def steady_state_lag(gains: Gains, dt=1.0, kind="acceleration", magnitude=1.0, o
     tracker under jerk. ``gamma`` is canonical: in Huang et al.'s convention
     (``gamma_H = gamma / 2``) the jerk lag is ``J T^3 / (2 gamma_H)``, half of seed 002's
     printed ``B / (gamma F_r^3)``
-    (:func:`abglib.replications.huang.printed.steady_state_lag_huang`).
+    (``abglib.replications.huang.printed.steady_state_lag_huang``).
 
     References
     ----------

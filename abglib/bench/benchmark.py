@@ -332,7 +332,7 @@ def cell_dataset(parquet, scenario: str, spec: Mapping, runs=None, seed=None):
     overrides the Monte Carlo size (``benchmark.runs``), the scenario regenerated from its
     spec with that many runs and the seed ``seed``.
 
-    A regenerated dataset is kept (read-only, up to :data:`DATASET_CACHE_BYTES`, least
+    A regenerated dataset is kept (read-only, up to ``DATASET_CACHE_BYTES``, least
     recently used dropped first) for the other cells of the scenario in this process: the
     same spec, runs and seed give the same dataset, so it is generated once per scenario."""
     import json

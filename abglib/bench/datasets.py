@@ -39,7 +39,7 @@ the stationary first-order autoregressive process of :func:`abglib.simulate.ar1_
 Storage (:func:`write`, :func:`read`): Parquet in long format, one row per
 ``(run, sample)``, columns :data:`BASE_COLUMNS` then, per coordinate ``c``,
 ``c_true`` (m), ``c_vel_true`` (m/s), ``c_acc_true`` (m/s²), ``c_meas`` (m); beside it a
-JSON manifest with the scenario spec, its sha256 (:func:`abglib.common.files.config_hash`),
+JSON manifest with the scenario spec, its sha256 (``abglib.common.files.config_hash``),
 the seed, the abglib and generator versions, the schema (names, dtypes, units), and the
 sha256 of the Parquet file. Rewriting the same scenario gives byte-identical files.
 """

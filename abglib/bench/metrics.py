@@ -60,7 +60,7 @@ __all__ = [
     "vrf_failures",
 ]
 
-#: Estimates scored against the truth (defined in :mod:`._family`, which the workflow's
+#: Estimates scored against the truth (defined in ``abglib.bench._family``, which the workflow's
 #: parse imports without this module's numerics).
 OUTPUTS = _family.OUTPUTS
 # the tracker outputs (abglib.track) each scored estimate is made of (v_pred: eq 2's

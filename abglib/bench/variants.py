@@ -168,6 +168,7 @@ def _huang_family(p) -> str:
     return kind + _order_suffix(p)
 
 
+#: Every gain-design rule a variant can name, by name (filled by :func:`register` below).
 RULES: dict[str, Rule] = {}
 
 

@@ -5,7 +5,7 @@ the core (the benchmark, the replications, the reports): a column's declared pre
 (:func:`with_precision`, digits or a round-off bound such as ``"<1e-12"``, the
 :func:`format_cell` grammar), merged with the precision derived for that table by
 ``abglib precision`` (:func:`precision_for`, reading the generated
-:mod:`abglib.common._precision_table`; the derivation is :mod:`abglib.reporting.precision`),
+``abglib.common._precision_table``; the derivation is ``abglib.reporting.precision``),
 the formatted text (:func:`csv_text`), the atomic write (:func:`write_csv`) and the read
 back for display (:func:`read_table`). Numbers use the verdict engine's deterministic
 :func:`abglib.verdicts.format_number` (``shared/CONTRACTS.md`` section 3: "numbers are

@@ -24,7 +24,7 @@ A qualitative claim has an empty ``published`` field and a boolean ``reproduced`
 The tolerance is half a unit in the last printed digit
 (:func:`abglib.verdicts.tolerance_from_printed`) unless an override (with a reason) is
 given, e.g. for a value read off a graph. Judging is the verdict engine's
-(:mod:`abglib.verdicts`); the claim model (:mod:`abglib.replications._claims`) builds each
+(:mod:`abglib.verdicts`); the claim model (``abglib.replications._claims``) builds each
 document's table from its claims; writing a table at its columns' precision is
 :func:`abglib.common.tables.write_csv`.
 """

@@ -1,24 +1,24 @@
 """The verdict engine: how a printed number is judged against a reproduced one.
 
 One home for judging (``shared/CONTRACTS.md`` section 3). Documents declare claims and
-their readings (:mod:`abglib.replications`); this package judges them. It imports the core
+their readings (``abglib.replications``); this package judges them. It imports the core
 and numpy only, never ``abglib.replications``, ``abglib.bench`` or ``abglib.reporting``.
 
-Numbers (:mod:`abglib.verdicts._numbers`)
+Numbers (``abglib.verdicts._numbers``)
     ``parse_printed`` (a printed number, exactly), ``tolerance_from_printed`` (half a unit
     in the last printed digit), ``printed_unit``, ``reference_span`` (the decade an
     unrelated number of the same precision is drawn from), ``within_tolerance``,
     ``format_number`` (deterministic significant digits).
-Verdicts (:mod:`abglib.verdicts._judge`)
+Verdicts (``abglib.verdicts._judge``)
     ``Reading`` (a claim's hand-written reading, with its ``family:detail`` label),
     ``Alternative`` (a reading tied to a key), ``verdict`` (by tolerance alone),
     ``judge`` (one ``comparison.csv`` row: tolerance, vague words, the reading catalogue
     and its chance check), ``judge_sentences`` (the rows of one printed sentence share a
     reading).
-The reading catalogue (:mod:`abglib.verdicts.readings`)
+The reading catalogue (``abglib.verdicts.readings``)
     ``GENERIC_FAMILIES``, ``CLAIM_FAMILIES``, ``OCR_PAIRS``, ``THRESHOLD``, ``chance``
     (a family's look-elsewhere cost), ``explain``.
-Vague words (:mod:`abglib.verdicts.vague`)
+Vague words (``abglib.verdicts.vague``)
     ``VAGUE`` (one table for every document), ``find_vague``, ``vague_tolerances``,
     ``threshold_range``.
 """

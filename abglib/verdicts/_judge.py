@@ -1,10 +1,10 @@
 """The verdict of one row, and of the rows of one printed sentence.
 
 ``match`` when the reproduced value is within tolerance of the printed one; ``explained``
-when it is not but a reading of the catalogue (:mod:`abglib.verdicts.readings`) or a
+when it is not but a reading of the catalogue (``abglib.verdicts.readings``) or a
 hand-written :class:`Reading` reproduces the printed number within tolerance at a chance
 within its budget; ``mismatch`` otherwise; ``not_reproducible`` without a value, or when
-the verdict flips across a vague word's declared range (:mod:`abglib.verdicts.vague`).
+the verdict flips across a vague word's declared range (``abglib.verdicts.vague``).
 """
 
 from __future__ import annotations
@@ -35,7 +35,7 @@ class Reading:
     its value, ``section`` the report section that demonstrates it and ``family`` its
     ``family:detail`` label (``convention:two-sided bandwidth``, ...). It explains a
     non-matching row only within tolerance and at a look-elsewhere chance of at most
-    :data:`~abglib.verdicts.readings.THRESHOLD` (readings with one label form one family).
+    ``abglib.verdicts.THRESHOLD`` (readings with one label form one family).
 
     A reading of a *qualitative* row (empty ``published``) has ``value`` True when the
     check holds under the reading, and must give its ``chance``: a check has no printed
@@ -139,7 +139,7 @@ def judge(
         ``{key: {"tolerance": float, "reason": str}}``.
     related : mapping, optional
         Related quantities for the claim-specific reading families
-        (:mod:`abglib.verdicts.readings`).
+        (``abglib.verdicts.readings``).
     bound : {"", ">", "<"}
         ``">"`` (``"<"``): ``value`` is not the quantity but a bound on it, which lies
         beyond (below) it, e.g. a stability edge past the end of the grid searched. The
@@ -290,7 +290,7 @@ def _bounded(doc, row, value, pub, tol, bound, note, out, abs_err, rel_err) -> _
 
 def _qualitative_reading(readings):
     """The first reading under which a failed qualitative check holds, at a chance (which
-    it must state) within :data:`~abglib.verdicts.readings.THRESHOLD`."""
+    it must state) within ``abglib.verdicts.THRESHOLD``."""
     for r in readings:
         if isinstance(r.value, (bool, np.bool_)) and bool(r.value):
             c = getattr(r, "chance", None)
@@ -381,7 +381,7 @@ def judge_sentences(judged: Sequence[_Judged], sentences: Sequence[str]) -> list
 
     ``sentences[i]`` is the grouping key of ``judged[i]`` (empty: a row of its own).
     Within a group, a shared reading (a convention, an aggregation, a scope: not a
-    misprint of one number, :attr:`~abglib.verdicts.readings.Family.shared`) accepted
+    misprint of one number, ``Family.shared`` of ``abglib.verdicts.readings``) accepted
     for one row is tried for all: it stands only when, for every numeric row of the
     group that it gives a value for, that value is within tolerance of the printed
     number, and when the product of the chances of the rows it explains is within

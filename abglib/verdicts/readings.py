@@ -40,7 +40,7 @@ No explaining by luck
 Each family's look-elsewhere cost (:func:`chance`) is the probability that a number
 unrelated to the study, printed with the same precision, lands within tolerance of one of
 the family's candidates: the union of the candidates' tolerance windows ``[c - t, c + t]``
-inside the printed value's reference span (:func:`~abglib.verdicts._numbers.reference_span`:
+inside the printed value's reference span (:func:`~abglib.verdicts.reference_span`:
 its printed decade), over the span's length. With the half-unit tolerance a window is one
 printed unit wide, so a single candidate costs ``1 / (9 * 10^(s-1))`` for ``s``
 significant digits (1/9 for '7', 1/90 for '40', 1/900 for '.135').
@@ -147,7 +147,7 @@ def chance(candidates: Iterable[float], printed: str, tolerance: float | None = 
     """Look-elsewhere cost of a set of candidate values (module docstring).
 
     The fraction of the numbers of the printed precision in the reference span of
-    ``printed`` (:func:`~abglib.verdicts._numbers.reference_span`) that lie within
+    ``printed`` (:func:`~abglib.verdicts.reference_span`) that lie within
     ``tolerance`` (default half a unit in the last printed digit) of some candidate: the
     probability that a number unrelated to the study, printed like ``printed``, would be
     reproduced by one of the candidates. For candidates one unit or more apart this is the
@@ -455,7 +455,7 @@ def explain(row: Row, readings: Iterable = (), within=None) -> Explanation:
         Hand-written readings of the claim (each with a ``family`` label).
     within : callable, optional
         ``within(candidate_value, printed_value, tolerance) -> bool`` (default
-        :func:`~abglib.verdicts._numbers.within_tolerance`).
+        :func:`~abglib.verdicts.within_tolerance`).
 
     Returns
     -------
