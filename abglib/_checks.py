@@ -46,8 +46,9 @@ def _first_bad(arr: np.ndarray, bad: np.ndarray) -> str:
 def as_float_array(name: str, value) -> np.ndarray:
     """Convert ``value`` to a float64 array, or raise naming ``name``.
 
-    Only real numbers are accepted: a string (even ``"0.3"``), ``None`` or a complex
-    value is refused instead of being parsed, turned into NaN or cast to its real part.
+    Only real numbers are accepted: a string (even ``"0.3"``), ``None``, a boolean or a
+    complex value is refused instead of being parsed, turned into NaN, read as 1 or 0, or
+    cast to its real part.
     """
     if value is None or isinstance(value, (str, bytes)):
         raise AbglibValueError(f"{name} must be a real number or array of them, got {value!r}")
@@ -56,10 +57,15 @@ def as_float_array(name: str, value) -> np.ndarray:
         raise AbglibValueError(
             f"{name} must be a real number or array of them, got strings ({describe(arr)})"
         )
+    if arr.dtype.kind == "b":
+        raise AbglibValueError(
+            f"{name} must be a real number or array of them, got booleans "
+            f"({value if arr.ndim == 0 else describe(arr)}); pass 1.0 / 0.0 if that is meant"
+        )
     if arr.dtype.kind == "c":
         raise AbglibValueError(
-            f"{name} must be real, got complex values ({describe(arr)}); pass z.real or "
-            "abs(z) explicitly"
+            f"{name} must be real, got complex values ({describe(arr)}); pass {name}.real or "
+            f"abs({name}) explicitly"
         )
     if arr.dtype.kind == "O":
         for v in arr.flat:

@@ -59,13 +59,15 @@ def test_bad_gains(args, match):
     [
         (("0.3", 0.1), r"alpha must be a real number or array of them, got '0.3'"),
         ((None, 0.1), r"alpha must be a real number or array of them, got None"),
-        ((0.3, 0.1 + 0.0j), r"beta must be real, got complex"),
+        ((0.3, 0.1 + 0.0j), r"beta must be real, got complex .*pass beta\.real or abs\(beta\)"),
+        ((True, 0.1), r"alpha must be a real number or array of them, got booleans \(True\)"),
+        ((0.3, np.array([False, True])), r"beta .* got booleans \(\[False,  True\]\)"),
         ((np.array(["0.3"]), 0.1), r"alpha must be a real number or array of them, got strings"),
         ((np.array([0.3, None], dtype=object), 0.1), r"alpha .* got an element None"),
     ],
 )
-def test_gains_refuse_strings_none_and_complex(args, match):
-    # numbers are never parsed from text nor cast from complex: the caller converts
+def test_gains_refuse_strings_none_booleans_and_complex(args, match):
+    # numbers are never parsed from text nor cast from booleans or complex: the caller converts
     with pytest.raises(AbglibValueError, match=match):
         Gains(*args)
 
