@@ -143,14 +143,16 @@ def test_a_users_own_tracker_runs_in_the_matrix(extended):
 
 @pytest.mark.xdist_group(SMALL_BUILD)
 def test_every_bad_variant_is_named_at_parse_time(extended):
-    """A misspelt parameter of a built-in rule and a user's function that is not there: the
-    dry run stops at parse time with one error naming both variants, what is wrong with
-    each and the allowed parameters, and the good variants say nothing."""
+    """A misspelt parameter of a built-in rule, a gain out of range and a user's function
+    that is not there: the dry run stops at parse time with one error naming the three
+    variants, what is wrong with each and the allowed parameters, and the good variants say
+    nothing."""
     bad = extended.work.parent / "bad.yaml"
     bad.write_text(
         "benchmark:\n  variants:\n"
         "    typo: {rule: benedict_bordner, alpah: 0.4}\n"
         "    fine: {rule: benedict_bordner, alpha: 0.4}\n"
+        "    wild: {rule: benedict_bordner, alpha: 2.5}\n"
         f"    gone: {{callable: '{extended.code}:my_gainz', alpha: 0.4}}\n",
         encoding="utf-8",
     )
@@ -159,6 +161,9 @@ def test_every_bad_variant_is_named_at_parse_time(extended):
     said = out.stdout + out.stderr
     assert "variant 'typo'" in said and "allowed: alpha" in said, said[-2000:]
     assert "variant 'gone'" in said and "has no function 'my_gainz'" in said, said[-2000:]
+    # a gain out of range fails alike on every scenario: the reason is said once
+    assert "variant 'wild' is infeasible on every scenario (" in said, said[-2000:]
+    assert said.count("alpha must satisfy 0 < alpha <= 1, got 2.5") == 1, said[-2000:]
     assert "variant 'fine'" not in said
 
 

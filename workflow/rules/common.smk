@@ -289,11 +289,16 @@ def _check_benchmark():
                 if "callable" in spec:
                     problems.append(f"benchmark variant {name!r}: {exc}")
                     break
-                errors.append(f"{s}: {exc}")
+                errors.append((s, str(exc)))
         if errors and len(errors) == len(BENCH_SCENARIOS):  # a callable broke out above
+            reasons = {why for _, why in errors}
+            # the same reason on every scenario (a gain out of range): said once
+            if len(reasons) == 1:
+                detail = f" ({', '.join(s for s, _ in errors)}): {reasons.pop()}"
+            else:
+                detail = ":\n  " + "\n  ".join(f"{s}: {why}" for s, why in errors)
             problems.append(
-                f"benchmark variant {name!r} is infeasible on every scenario:\n  "
-                + "\n  ".join(errors)
+                f"benchmark variant {name!r} is infeasible on every scenario{detail}"
             )
     if problems:
         raise WorkflowError("\n".join(problems))
