@@ -160,3 +160,13 @@ def test_help_names_every_command_in_plain_text(capsys):
     for command in ("verify", "release", "changes", "precision", "findings"):
         assert command in out
     assert "``" not in out  # no reStructuredText markup
+
+
+def test_version_is_the_package_version(capsys):
+    """``abglib --version``: the version a build writes its reports under (reports/v<it>)."""
+    import abglib
+
+    with pytest.raises(SystemExit) as exc:
+        main(["--version"])
+    assert exc.value.code == 0
+    assert capsys.readouterr().out.strip() == f"abglib {abglib.__version__}"

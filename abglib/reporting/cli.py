@@ -66,6 +66,7 @@ def _at_least(low: int):
 
 def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="abglib", description=DESCRIPTION)
+    p.add_argument("--version", action="version", version=f"abglib {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
     v = sub.add_parser("verify", help="compare a build's tables with a release")
     v.add_argument("build", nargs="?", type=Path, default=BUILD, help=f"default: {BUILD}")
