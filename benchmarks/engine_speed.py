@@ -31,8 +31,9 @@ Reference rows (no target; they show what bounds the target rows on this machine
 * ``dependency chain, minimal numba loop`` (single series only): seed 000, eqs 1-6 in
   the fewest operations numba compiles it to, no outputs stored, no checks: the speed
   of the recursion's dependency chain itself (each sample waits for the previous
-  estimate), which no bit-identical single-series kernel beats on every input (splitting
-  a series and verifying was measured: benchmarks/chain_coalescence.py). Printed with the
+  estimate). A bit-identical kernel could beat it only by speculating, on inputs where
+  guessed runs meet the exact one early; the split measured in
+  benchmarks/chain_coalescence.py loses on inputs where they do not. Printed with the
   CPU-time latencies of a dependent add and a dependent multiply measured in the same
   round, and the chain's length in those (docs/engine-speed.md explains it).
 
@@ -432,7 +433,7 @@ def verdicts(df: pd.DataFrame) -> tuple[list[str], bool]:
             )
     lines.append(
         f"one series: >= {SINGLE_RATE:.0e} /s, or the dependency chain's own speed on this "
-        "machine (no bit-identical kernel beats it on every input)"
+        "machine (a kernel that keeps the bits beats it only by speculating: docs/engine-speed.md)"
     )
     for filt in GAINS:
         chain = per_round.loc[("single", filt, CHAIN)].median_rate
