@@ -31,7 +31,7 @@ Measured with the public API only, on the same measurements:
 
 Signals (``dt = 0.1`` s, 30 m noise on the radar ones, at ranges a radar tracks): the
 engine benchmark's random walk (``cumsum`` of unit normals); a target inbound from 100 km
-at 250 m/s, a new pass every 400 s; a target circling, its range 50 ± 20 km over a period
+to 20 km at 200 m/s, a new pass every 400 s; a target circling, its range 50 ± 20 km over a period
 of 600 s; a stationary target at 10 km. Gains: critically damped α-β for θ = 0.5, 0.8
 (the engine benchmark's) and 0.95 (seed 000). Seeded (``SEED``): every run prints the
 same meeting samples; the timings are this machine's.
@@ -63,7 +63,7 @@ def signal(kind: str, n: int, rng: np.random.Generator) -> np.ndarray:
     t = np.arange(n) * DT
     noise = 30.0 * rng.normal(size=n)
     if kind == "inbound":
-        return 100e3 - 250.0 * (t % 400.0) + noise
+        return 100e3 - 200.0 * (t % 400.0) + noise
     if kind == "circling":
         return 50e3 + 20e3 * np.sin(2 * np.pi * t / 600.0) + noise
     if kind == "stationary":
