@@ -127,7 +127,52 @@ def api_home(modname: str, name: str) -> str:
     return max(homes, key=len) if homes else modname
 
 
-autosummary_context = {"api_home": api_home}
+def _plain(obj) -> bool:
+    """A number, a string, or a tuple of them (nested): a value worth printing as is."""
+    if isinstance(obj, tuple):
+        return all(_plain(x) for x in obj)
+    return isinstance(obj, (int, float, str))
+
+
+def reexported_constants(modname: str) -> list[tuple[str, str, list[str]]]:
+    """The public constants ``modname`` re-exports from its submodules, documented here.
+
+    ``abglib.verdicts`` and ``abglib.analysis`` re-export constants defined in private
+    submodules, which autosummary does not list (it reads doc comments of the module itself
+    only). Each is returned as ``(name, value, doc lines)``: the value's repr when it is
+    short and plain (:func:`_plain`, else ``""``), the ``#:`` comment above its
+    definition. A public constant without one fails the build: every public name is
+    documented.
+    """
+    import importlib
+    import types
+
+    from sphinx.pycode import ModuleAnalyzer
+
+    mod = importlib.import_module(modname)
+    names = getattr(mod, "__all__", None) or [n for n in dir(mod) if not n.startswith("_")]
+    own = ModuleAnalyzer.for_module(modname).find_attr_docs()
+    found = []
+    for name in names:
+        obj = getattr(mod, name)
+        if name.startswith("_") or callable(obj) or isinstance(obj, types.ModuleType):
+            continue
+        if ("", name) in own:
+            continue  # autosummary lists it
+        doc = None
+        for sub in sorted(m for m in sys.modules if m.startswith(modname + ".")):
+            if getattr(sys.modules[sub], name, None) is obj:
+                doc = ModuleAnalyzer.for_module(sub).find_attr_docs().get(("", name))
+                if doc:
+                    break
+        if not doc:
+            raise ValueError(f"{modname}.{name} is public but has no #: comment where defined")
+        value = repr(obj) if _plain(obj) and len(repr(obj)) <= 120 else ""
+        found.append((name, value, [line for line in doc if line.strip()]))
+    return found
+
+
+autosummary_context = {"api_home": api_home, "reexported_constants": reexported_constants}
 # every cross-reference must resolve (-W makes a miss an error), but those to numpy, scipy
 # and the standard library: without intersphinx (offline) they render as code, unlinked
 nitpicky = True

@@ -22,6 +22,7 @@ import re
 import subprocess
 import sys
 import time
+import types
 from html.parser import HTMLParser
 from pathlib import Path
 from urllib.parse import unquote, urlsplit
@@ -185,6 +186,17 @@ def test_every_public_name_has_its_api_page(site):
             home = api_home(modname, name)
             assert (site / "generated" / f"{home}.{name}.html").is_file(), (
                 f"{modname}.{name}: no page generated/{home}.{name}.html"
+            )
+        # constants: a page of their own (autosummary, a #: comment in the module itself) or
+        # an entry on the module's page (re-exported from a submodule: conf.py documents it)
+        page = (site / "generated" / f"{modname}.html").read_text(encoding="utf-8")
+        for name in getattr(mod, "__all__", None) or [n for n in dir(mod) if n[0] != "_"]:
+            obj = getattr(mod, name)
+            if name.startswith("_") or callable(obj) or isinstance(obj, types.ModuleType):
+                continue
+            own = site / "generated" / f"{modname}.{name}.html"
+            assert own.is_file() or f'id="{modname}.{name}"' in page, (
+                f"{modname}.{name}: a public constant documented nowhere"
             )
 
 

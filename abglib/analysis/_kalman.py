@@ -23,7 +23,7 @@ KALMAN_MODELS = ("piecewise_constant", "piecewise_constant_jerk", "continuous")
 def process_noise(order: int, model: str, T: float) -> np.ndarray:
     """Process-noise covariance per unit ``q`` of a target model (order x order).
 
-    ``model`` is one of ``abglib.analysis.KALMAN_MODELS`` (described at
+    ``model`` is one of :data:`~abglib.analysis.KALMAN_MODELS` (described at
     :func:`abglib.design.steady_state_kalman`); ``order`` 2 (state ``[x, v]``) or 3
     (``[x, v, a]``); ``T`` the sample interval.
 

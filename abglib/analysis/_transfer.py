@@ -182,7 +182,7 @@ def frequency_response(gains: Gains, output: str, wT, dt: float = 1.0):
     gains : Gains
         Canonical gains, scalars or a bank of shape ``S``.
     output : str
-        One of ``abglib.analysis.OUTPUTS`` (see :func:`transfer_function`).
+        One of :data:`~abglib.analysis.OUTPUTS` (see :func:`transfer_function`).
     wT : float or array (W...)
         Normalised angular frequency ``omega T`` in radians per sample; any grid, finite.
     dt : float, default 1.0

@@ -174,7 +174,7 @@ def vrf(gains: Gains, dt=1.0) -> dict:
     -------
     dict
         Keys ``x_smooth, v_smooth, a_smooth, x_pred, v_pred, a_pred``
-        (``abglib.analysis.VRF_KEYS``):
+        (:data:`~abglib.analysis.VRF_KEYS`):
         the steady-state variance of each output per unit variance of white measurement
         noise; floats for scalar gains, arrays ``(...)`` for a bank. Velocity entries
         carry ``1/T^2``, acceleration entries ``1/T^4``. ``*_pred`` is the one-step

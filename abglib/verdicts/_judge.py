@@ -35,7 +35,7 @@ class Reading:
     its value, ``section`` the report section that demonstrates it and ``family`` its
     ``family:detail`` label (``convention:two-sided bandwidth``, ...). It explains a
     non-matching row only within tolerance and at a look-elsewhere chance of at most
-    ``abglib.verdicts.THRESHOLD`` (readings with one label form one family).
+    :data:`~abglib.verdicts.THRESHOLD` (readings with one label form one family).
 
     A reading of a *qualitative* row (empty ``published``) has ``value`` True when the
     check holds under the reading, and must give its ``chance``: a check has no printed
@@ -290,7 +290,7 @@ def _bounded(doc, row, value, pub, tol, bound, note, out, abs_err, rel_err) -> _
 
 def _qualitative_reading(readings):
     """The first reading under which a failed qualitative check holds, at a chance (which
-    it must state) within ``abglib.verdicts.THRESHOLD``."""
+    it must state) within :data:`~abglib.verdicts.THRESHOLD`."""
     for r in readings:
         if isinstance(r.value, (bool, np.bool_)) and bool(r.value):
             c = getattr(r, "chance", None)

@@ -360,6 +360,8 @@ def _input_typo(row: Row) -> list[Candidate]:
     return out
 
 
+#: The generic reading families, in the order tried (typographic slips and conventions):
+#: they need only the printed and the reproduced numbers.
 GENERIC_FAMILIES: tuple[Family, ...] = (
     Family("typo:decimal point shifted", True, False, _decimal_shift),
     Family("typo:digit dropped", True, False, _typo("digit dropped")),
@@ -392,6 +394,8 @@ GENERIC_FAMILIES: tuple[Family, ...] = (
     ),
 )
 
+#: The claim-specific reading families (aggregation, scope, per second, an input's typo):
+#: each needs what a claim returns in ``Result.related``.
 CLAIM_FAMILIES: tuple[Family, ...] = (
     Family("aggregation", False, True, _aggregation),
     Family("scope", False, True, _scope),

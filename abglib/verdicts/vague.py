@@ -1,8 +1,9 @@
 """Vague words read as plausible inputs: one table for every document.
 
 A printed "about 20 %" is not the exact number 20 with half a unit of tolerance: the word
-widens it. Each word of ``VAGUE`` has a declared interpretation range (the low and
-high reading of its width) and its basis; a numeric row whose printed text carries the
+widens it. Each word of :data:`~abglib.verdicts.VAGUE` has a declared interpretation
+range (the low and high reading of its width) and its basis; a numeric row whose printed
+text carries the
 word is judged at both ends of the range (:func:`vague_tolerances`), and is robust only
 when the verdict is the same at both (``shared/CONTRACTS.md`` section 3: "a declared
 range for a vague word counts as an input"). Words that qualify a comparison
@@ -33,6 +34,8 @@ class VagueWord:
     side: str = "both"
 
 
+#: Every vague word with its declared interpretation range and why (one table for every
+#: document).
 VAGUE: tuple[VagueWord, ...] = (
     VagueWord(
         "about",
@@ -91,7 +94,7 @@ _BY_WORD = {v.word: v for v in VAGUE}
 
 
 def find_vague(text: str) -> list[VagueWord]:
-    """The vague words of ``VAGUE`` in ``text`` (case-insensitive, whole words;
+    """The vague words of :data:`~abglib.verdicts.VAGUE` in ``text`` (case-insensitive, whole words;
     'very highly significant' before its parts)."""
     found, rest = [], str(text).lower()
     for v in sorted(VAGUE, key=lambda v: -len(v.word)):
@@ -124,7 +127,7 @@ def vague_tolerances(published: float, half_unit: float, words) -> list[tuple[fl
 
 
 def threshold_range(word: str) -> tuple[float, float]:
-    """The declared ``(low, high)`` range of one word of ``VAGUE``.
+    """The declared ``(low, high)`` range of one word of :data:`~abglib.verdicts.VAGUE`.
 
     Raises
     ------
