@@ -42,7 +42,7 @@ replications
 reporting
     (``[reporting]``) provenance, report rendering, releases, the workflow's glue.
 
-The core (``pip install abglib``) needs numpy, scipy and numba only. Each layer imports
+The core (``pip install .`` from a clone) needs numpy, scipy and numba only. Each layer imports
 only the ones below it (``docs/architecture.md``, ``tests/test_layers.py``).
 """
 

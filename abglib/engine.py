@@ -240,7 +240,7 @@ def track(
     detected : bool array (..., n), optional
         False where the detection was missed: the tracker coasts on its prediction
         (``x_smooth = x_pred``), and ``z`` there is ignored (it may be NaN).
-    outputs : sequence of str, default all of ``OUTPUTS``
+    outputs : sequence of str, default all four
         Which of ``x_pred``, ``x_smooth``, ``v_smooth``, ``a_smooth`` to return; the
         others are ``None`` and cost no memory (useful in large Monte Carlo runs).
     out : dict of str to array, or TrackResult, optional
@@ -285,6 +285,9 @@ def track(
 
     .. math::
         x_p = \\bar x_{n-1} + T\\bar v_{n-1} + \\tfrac12 T^2 \\bar a_{n-1},\\quad
+        v_p = \\bar v_{n-1} + T\\bar a_{n-1},\\quad a_p = \\bar a_{n-1},
+
+    .. math::
         \\bar x_n = x_p + \\alpha r,\\ \\bar v_n = v_p + \\tfrac{\\beta}{T} r,\\quad
         \\bar a_n = a_p + \\tfrac{\\gamma}{T^2} r,\\quad r = z_n - x_p.
 

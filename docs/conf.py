@@ -176,13 +176,27 @@ autosummary_context = {"api_home": api_home, "reexported_constants": reexported_
 # every cross-reference must resolve (-W makes a miss an error), but those to numpy, scipy
 # and the standard library: without intersphinx (offline) they render as code, unlinked
 nitpicky = True
-nitpick_ignore_regex = [(r"py:.*", r"(numpy|scipy|csv)(\..*)?")]
+nitpick_ignore_regex = [
+    (r"py:.*", r"(numpy|scipy|csv|python:.*|numpy:.*)(\..*)?"),
+    (r"std:(ref|term)", r"(python|numpy):.*"),  # numpydoc's aliases of "bool", "iterable"
+]
 # a function in the config cannot be pickled with the environment: Sphinx then rereads
 # every page on the next build (a clean build anyway, docs/README.md); nothing else is muted
 suppress_warnings = ["config.cache"]
 numpydoc_show_class_members = False
 numpydoc_class_members_toctree = False
-numpydoc_xref_param_type = False
+# a parameter's type is a link when it is one of abglib's own classes (the aliases); every
+# other word of a type stays text (numpydoc's built-in aliases point at Python's and
+# numpy's inventories, which an offline build does not have: ignored above)
+numpydoc_xref_param_type = True
+numpydoc_xref_ignore = "all"
+numpydoc_xref_aliases = {
+    "Gains": "abglib.Gains",
+    "TrackResult": "abglib.TrackResult",
+    "Reading": "abglib.verdicts.Reading",
+    "Alternative": "abglib.verdicts.Alternative",
+    "Row": "abglib.verdicts.readings.Row",
+}
 
 # -- equations: MathML at build time (no MathJax, no network) --------------------------
 html_math_renderer = "mathml"

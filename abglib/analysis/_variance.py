@@ -225,7 +225,7 @@ def vrf(gains: Gains, dt=1.0) -> dict:
 
 # --------------------------------------------------------------------------- printed
 def vrf_benedict_ab(gains: Gains, dt=1.0) -> dict:
-    r"""Standard alpha-beta VRFs (Benedict & Bordner, seed 000 ref. [7]).
+    r"""Standard alpha-beta VRFs (Benedict & Bordner 1962, reference [7] of seed 000).
 
     Parameters
     ----------

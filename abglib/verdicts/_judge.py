@@ -23,7 +23,7 @@ from .vague import find_vague, vague_tolerances
 
 __all__ = ["Alternative", "Reading", "judge", "judge_sentences", "verdict"]
 
-#: the family of a hand-written reading that does not name one
+#: The family label of a hand-written :class:`Reading` that names none.
 HAND_WRITTEN = "claim:hand-written reading"
 
 

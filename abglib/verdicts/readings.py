@@ -10,30 +10,44 @@ column ``reading``). :func:`explain` applies every family to a non-match row.
 Generic families (need only the printed and the reproduced numbers; tried on every
 non-match numeric row):
 
-``typo:decimal point shifted``     the reproduced value times 10^k, k = ±1, ±2, ±3
-``typo:digit dropped``             one digit of the rounded reproduced value left out
-``typo:digit doubled``             one digit of it printed twice
-``typo:two digits transposed``     two adjacent (different) digits swapped
-``typo:OCR confusion``             one digit replaced by its scan look-alike, pairs
-                                   :data:`OCR_PAIRS`
-``typo:sign lost``                 the negated value
-``typo:truncated``                 truncated, not rounded, at the printed digit
-``typo:double rounding``           rounded at one digit more, then at the printed one
-``convention:factor 2``            x2 and /2: one- vs two-sided bandwidth, 10 vs 20 log dB
-``convention:percent vs fraction`` x100 and /100
-``convention:radians vs degrees``  x180/pi and xpi/180
+``typo:decimal point shifted``
+    the reproduced value times 10^k, k = ±1, ±2, ±3
+``typo:digit dropped``
+    one digit of the rounded reproduced value left out
+``typo:digit doubled``
+    one digit of it printed twice
+``typo:two digits transposed``
+    two adjacent (different) digits swapped
+``typo:OCR confusion``
+    one digit replaced by its scan look-alike, pairs :data:`OCR_PAIRS`
+``typo:sign lost``
+    the negated value
+``typo:truncated``
+    truncated, not rounded, at the printed digit
+``typo:double rounding``
+    rounded at one digit more, then at the printed one
+``convention:factor 2``
+    x2 and /2: one- vs two-sided bandwidth, 10 vs 20 log dB
+``convention:percent vs fraction``
+    x100 and /100
+``convention:radians vs degrees``
+    x180/pi and xpi/180
 
-Claim-specific families (from :attr:`Row.related`, which a claim returns in
-``Result.related``):
+Claim-specific families (from the ``related`` field of a :class:`Row`, which a claim
+returns in ``Result.related``):
 
-``values``      a sequence of per-row values → ``aggregation:<mean|median|rms|...>``
-``neighbours``  ``{label: value}`` (the neighbouring grid point, order or row)
-                → ``scope:<label>``
-``dt``          the sample interval T → ``convention:per second`` (x1/T, xT, x1/T², xT²)
-``inputs``      ``{name: (printed input, f)}``, ``f`` recomputing the value from that
-                input → ``typo:in input <name>`` (every typographic variant of the input)
-``readings``    hand-written readings (``Reading(..., family="convention:...")``), one
-                family per label kind
+``values``
+    a sequence of per-row values → ``aggregation:<mean|median|rms|...>``
+``neighbours``
+    ``{label: value}`` (the neighbouring grid point, order or row) → ``scope:<label>``
+``dt``
+    the sample interval T → ``convention:per second`` (x1/T, xT, x1/T², xT²)
+``inputs``
+    ``{name: (printed input, f)}``, ``f`` recomputing the value from that input →
+    ``typo:in input <name>`` (every typographic variant of the input)
+``readings``
+    hand-written readings (``Reading(..., family="convention:...")``), one family per
+    label kind
 
 No explaining by luck
 ---------------------

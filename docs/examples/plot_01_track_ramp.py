@@ -3,7 +3,8 @@ Track a noisy ramp
 ==================
 
 A target at constant speed, measured with white noise, tracked by a critically damped
-alpha-beta tracker (``design.standard_from_alpha``, seed 000, eqs 31-32). On a ramp the
+alpha-beta tracker (``design.standard_from_alpha``: seed 000, the alpha-beta gains
+before eq 31). On a ramp the
 alpha-beta tracker has no steady-state lag: once the start-up transient has decayed, the
 smoothed position is unbiased and only its noise is left, at the variance reduction factor
 of :func:`abglib.analysis.vrf`.
