@@ -2,34 +2,34 @@
 
 Public names
 ------------
-Gains
+:class:`Gains`
     Gain set ``(alpha, beta, gamma)`` in the canonical convention (seed 000, eqs 1-6).
-track
+:func:`track`
     Run the tracker recursion over measurements ``z`` of shape ``(..., n)``.
-TrackResult
+:class:`TrackResult`
     What :func:`track` returns: ``x_pred``, ``x_smooth``, ``v_smooth``, ``a_smooth``.
 
 Submodules (imported on first use)
 ----------------------------------
-design
+:mod:`~abglib.design`
     Every gain-design rule of the sources (standard/critically damped, QD,
     Benedict-Bordner, Simpson, growing memory, Huang type I/II, Bendix, Kalata).
-conventions
+:mod:`~abglib.conventions`
     Explicit converters to and from Huang et al.'s and FilterPy's gain conventions.
-analysis
+:mod:`~abglib.analysis`
     Transfer functions, frequency response, stability, variance reduction, transient
     measures, ENBW and frequency-domain features, each with a numeric twin.
-simulate
+:mod:`~abglib.simulate`
     Trajectories and measurement noise.
-methods
+:mod:`~abglib.methods`
     The gain-selection methods M1-M5 of seed 001 (and a causal M5), batched.
-verdicts
+:mod:`~abglib.verdicts`
     Judging a printed number against a reproduced one: tolerance from the printed digits,
     the reading catalogue with each family's look-elsewhere chance, vague words, and
     robustness over plausible inputs and random seeds.
 
-Layers installed with extras (``pip install "abglib[...]"``), lowest first
---------------------------------------------------------------------------
+Layers installed with extras (``pip install ".[...]"``), lowest first
+----------------------------------------------------------------------
 common
     (any extra) what the layers above the core share: deterministic tables, atomic
     writes, a job's threads and log, the one figure style.

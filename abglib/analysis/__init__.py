@@ -1,31 +1,34 @@
 """Exact analysis of fixed-gain alpha-beta(-gamma) trackers, each closed form with a numeric twin.
 
-Modules (one concept each; every public name is re-exported here):
+By topic (each topic is one private module, ``_transfer`` ... ``_kalman``; every public
+name is re-exported here):
 
-``_transfer``
-    transfer functions (seed 000 eqs 36-40), frequency response
-``_stability``
-    poles, pole radius, Jury conditions (seed 000 eqs 41-49),
-    seed 001 eqs 12-14 as printed, :func:`is_stable`
-``_features``
-    frequency-domain features: minimum at wT = pi (eq 50), exact wT at a gain
-    level (-3 dB, -6 dB, unity), exact peak and overshoot, and the printed
-    approximations of seed 000 eqs 51-59
-``_variance``
-    variance reduction factors: closed forms (seed 000 eqs 11-14, 25-27,
-    31-32) and the discrete Lyapunov solution (:func:`vrf`)
-``_transient``
-    transient measures D^2, A^2 (seed 000 eqs 15-20) and direct summation;
-    steady-state lag errors (seed 002)
-``_enbw``
-    equivalent noise bandwidth (seed 002 eq 8, one-sided) and a direct numeric route
-``_statespace``
-    the state-space form of a gain set (:func:`state_space`), where every numeric route
-    starts
-``_kalman``
-    the steady-state Kalman filter of a polynomial target model: process noise and the
-    discrete algebraic Riccati equation (the route of
-    :func:`abglib.design.steady_state_kalman`)
+Transfer functions and frequency response (seed 000 eqs 36-40)
+    :func:`transfer_function`, :func:`frequency_response`; the outputs :data:`OUTPUTS`
+Stability (seed 000 eqs 41-49; seed 001 eqs 12-14 as printed)
+    :func:`poles`, :func:`pole_radius`, :func:`characteristic_polynomial`,
+    :func:`is_stable`, :func:`require_stable`, :func:`stable_jury_steelman`,
+    :func:`stable_sufficient_eq49`
+Frequency-domain features (seed 000 eqs 50-59)
+    the minimum at ωT = π (:func:`min_gain_at_pi`, :func:`min_gain_steelman_eq50`), the
+    exact ωT at a gain level (:func:`omega_at_gain`), the exact :func:`peak` and
+    overshoot, :func:`first_undesired_max`, and the printed approximations
+    (:func:`omega_unity_eq51`, :func:`omega_unity_eq52`, :func:`omega_3db_eq53`,
+    :func:`omega_max_eq54`, :func:`overshoot_eq55`, :func:`overshoot_eq55_terms`)
+Variance reduction (seed 000 eqs 11-14, 25-27, 31-32)
+    the discrete Lyapunov solution :func:`vrf` (keys :data:`VRF_KEYS`) and the closed
+    forms :func:`vrf_simpson`, :func:`vrf_standard_abg`, :func:`vrf_standard_ab`,
+    :func:`vrf_benedict_ab`
+Transients and lag (seed 000 eqs 15-20; seed 002)
+    :func:`transient_d2`, :func:`transient_a2` (direct summation) and Simpson's
+    :func:`transient_d2_simpson`, :func:`transient_a2_simpson`; :func:`steady_state_lag`
+Noise bandwidth (seed 002 eq 8, one-sided)
+    :func:`enbw` and its direct numeric route :func:`enbw_numeric`
+State space
+    :func:`state_space` (a :class:`StateSpace`), where every numeric route starts
+Steady-state Kalman filter of a polynomial target model
+    :func:`process_noise` (models :data:`KALMAN_MODELS`) and :func:`kalman_gains`, the
+    discrete algebraic Riccati route of :func:`abglib.design.steady_state_kalman`
 
 Seed 002's printed forms (eqs 3, 5-7, 8-14, the steady-state lag formulas) live with
 their document in ``abglib.replications.huang.printed``.

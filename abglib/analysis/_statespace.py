@@ -22,11 +22,20 @@ __all__ = ["StateSpace", "state_space"]
 
 
 class StateSpace:
-    """Matrices of one (scalar) gain set: ``Phi``, ``H``, ``K``, ``F`` (see module doc).
+    """Matrices of one (scalar) gain set: ``Phi``, ``H``, ``K``, ``F``.
 
-    ``n`` is 3 for every gain set (an alpha-beta tracker has ``gamma = 0``, which leaves
-    the acceleration state at zero and adds a pole at z = 1 that is uncontrollable from
-    the measurements; :func:`state_space` with ``reduced=True`` drops it).
+    With the smoothed state ``s = [x, v, a]``, the transition ``Phi``, the measurement row
+    ``H`` and the gain ``K`` (seed 000, eqs 1-6, canonical convention)::
+
+        Phi = [[1, T, T^2/2], [0, 1, T], [0, 0, 1]],   H = [1, 0, 0],
+        K = [alpha, beta/T, gamma/T^2]^T
+        s(n) = F s(n-1) + K z(n),   F = (I - K H) Phi
+        x_p(n) = H Phi s(n-1)
+
+    The closed-loop matrix ``F`` has the poles of the tracker. ``n`` is 3 for every gain
+    set (an alpha-beta tracker has ``gamma = 0``, which leaves the acceleration state at
+    zero and adds a pole at z = 1 that is uncontrollable from the measurements;
+    :func:`state_space` with ``reduced=True`` drops it).
 
     References
     ----------
