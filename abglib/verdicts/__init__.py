@@ -15,7 +15,7 @@ Verdicts (``abglib.verdicts._judge``)
     ``judge`` (one ``comparison.csv`` row: tolerance, vague words, the reading catalogue
     and its chance check), ``judge_sentences`` (the rows of one printed sentence share a
     reading).
-The reading catalogue (``abglib.verdicts.readings``)
+The reading catalogue (:mod:`abglib.verdicts.readings`)
     ``GENERIC_FAMILIES``, ``CLAIM_FAMILIES``, ``OCR_PAIRS``, ``THRESHOLD``, ``chance``
     (a family's look-elsewhere cost), ``explain``.
 Vague words (``abglib.verdicts.vague``)

@@ -1,7 +1,7 @@
 """The verdict of one row, and of the rows of one printed sentence.
 
 ``match`` when the reproduced value is within tolerance of the printed one; ``explained``
-when it is not but a reading of the catalogue (``abglib.verdicts.readings``) or a
+when it is not but a reading of the catalogue (:mod:`abglib.verdicts.readings`) or a
 hand-written :class:`Reading` reproduces the printed number within tolerance at a chance
 within its budget; ``mismatch`` otherwise; ``not_reproducible`` without a value, or when
 the verdict flips across a vague word's declared range (``abglib.verdicts.vague``).
@@ -139,7 +139,7 @@ def judge(
         ``{key: {"tolerance": float, "reason": str}}``.
     related : mapping, optional
         Related quantities for the claim-specific reading families
-        (``abglib.verdicts.readings``).
+        (:mod:`abglib.verdicts.readings`).
     bound : {"", ">", "<"}
         ``">"`` (``"<"``): ``value`` is not the quantity but a bound on it, which lies
         beyond (below) it, e.g. a stability edge past the end of the grid searched. The
@@ -381,8 +381,8 @@ def judge_sentences(judged: Sequence[_Judged], sentences: Sequence[str]) -> list
 
     ``sentences[i]`` is the grouping key of ``judged[i]`` (empty: a row of its own).
     Within a group, a shared reading (a convention, an aggregation, a scope: not a
-    misprint of one number, ``Family.shared`` of ``abglib.verdicts.readings``) accepted
-    for one row is tried for all: it stands only when, for every numeric row of the
+    misprint of one number; ``shared`` of its :class:`~abglib.verdicts.readings.Family`)
+    accepted for one row is tried for all: it stands only when, for every numeric row of the
     group that it gives a value for, that value is within tolerance of the printed
     number, and when the product of the chances of the rows it explains is within
     budget. A reading that fails is withdrawn from every row of the group (they become

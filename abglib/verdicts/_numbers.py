@@ -76,7 +76,7 @@ def tolerance_from_printed(text: str) -> float:
 def reference_span(text: str) -> tuple[float, float]:
     """The plausible values of an unrelated number printed like ``text``: its decade.
 
-    The look-elsewhere model of ``abglib.verdicts.readings``: a number unrelated to the
+    The look-elsewhere model of :mod:`abglib.verdicts.readings`: a number unrelated to the
     study, printed with the same precision, is taken as uniform over the printed decade of
     ``text`` on its side of zero: the numbers ``10^d, 10^d + u, ..., 10^(d+1) - u`` with
     ``d = floor(log10|p|)`` and ``u`` the printed unit, each owning the cell of one unit

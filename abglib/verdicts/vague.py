@@ -3,10 +3,9 @@
 A printed "about 20 %" is not the exact number 20 with half a unit of tolerance: the word
 widens it. Each word of :data:`~abglib.verdicts.VAGUE` has a declared interpretation
 range (the low and high reading of its width) and its basis; a numeric row whose printed
-text carries the
-word is judged at both ends of the range (:func:`vague_tolerances`), and is robust only
-when the verdict is the same at both (``shared/CONTRACTS.md`` section 3: "a declared
-range for a vague word counts as an input"). Words that qualify a comparison
+text carries the word is judged at both ends of the range (:func:`vague_tolerances`), and
+is robust only when the verdict is the same at both (``shared/CONTRACTS.md`` section 3:
+"a declared range for a vague word counts as an input"). Words that qualify a comparison
 ("similar", "considerably", "much", "hardly", "very highly significant") give the
 thresholds a qualitative check may use (:func:`threshold_range`).
 """
